@@ -1,0 +1,87 @@
+// ======================================================================
+// \title  KitTopology.cpp
+// \brief  Set up and tear down the kit's deployment (shared by both variants)
+// ======================================================================
+#include "app/Top/KitTopology.hpp"
+#include "app/Top/GeneratedIds.hpp"
+#include <Fw/Types/Assert.hpp>
+
+namespace Kit {
+
+// One table drives both the rate group driver and the timing probe. Offsets
+// keep the slower groups off the ticks where the faster ones start.
+const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
+    {"rg1kHz", 1, 0},
+    {"rg100Hz", 10, 1},
+    {"rg10Hz", 100, 2},
+};
+
+namespace {
+
+// The uplink script: at 10 Hz cycle 2 a NO_OP, then the controller's setpoint
+// changed and changed back, so a run exercises dispatch, arguments and events.
+Uplink::Frame s_script[3];
+
+void buildScript() {
+    s_script[0] = Uplink::commandFrame(2, noOpOpcode(), nullptr, 0);
+    // SET_SETPOINT(I32) takes its argument big-endian, as F´ serializes it
+    const U8 setpointUp[4] = {0x00, 0x00, 0x07, 0xD0};    // 2000
+    const U8 setpointBack[4] = {0x00, 0x00, 0x03, 0xE8};  // 1000
+    const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
+    s_script[1] = Uplink::commandFrame(4, setSetpoint, setpointUp, sizeof setpointUp);
+    s_script[2] = Uplink::commandFrame(8, setSetpoint, setpointBack, sizeof setpointBack);
+}
+
+void configureTopology() {
+    Svc::RateGroupDriver::DividerSet dividers;
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        dividers.dividers[i] = {RATE_GROUPS[i].divisor, RATE_GROUPS[i].offset};
+    }
+    rateGroupDriver.configure(dividers);
+    timing.configure(RATE_GROUPS, RATE_GROUP_COUNT);
+
+    // Contexts are unused by the members; ActiveRateGroup wants one per port
+    U32 contexts[Svc::ActiveRateGroup::CONNECTION_COUNT_MAX] = {};
+    rg1kHz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
+    rg100Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
+    rg10Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
+
+    buildScript();
+    uplink.configure(s_script, FW_NUM_ARRAY_ELEMENTS(s_script));
+
+    // Time starts at zero at boot; there is no ground to set it
+    Os::RawTime now;
+    (void)now.now();
+    osTime.set_epoch(Fw::Time(0, 0), now);
+}
+
+}  // namespace
+
+FwOpcodeType noOpOpcode() {
+    return cmdDisp.getIdBase() + CmdDispIds::NO_OP;
+}
+
+U32 expectedCycles(FwIndexType rg, U32 ticks) {
+    FW_ASSERT(rg >= 0 && rg < RATE_GROUP_COUNT, static_cast<FwAssertArgType>(rg));
+    const RateGroupSpec& spec = RATE_GROUPS[rg];
+    return ticks <= spec.offset ? 0 : (ticks - spec.offset + spec.divisor - 1) / spec.divisor;
+}
+
+void setupTopology(const TopologyState& state) {
+    initComponents(state);
+    setBaseIds();
+    connectComponents();
+    regCommands();
+    configComponents(state);
+    configureTopology();
+    loadParameters();
+    startTasks(state);
+}
+
+void teardownTopology(const TopologyState& state) {
+    stopTasks(state);
+    freeThreads(state);
+    tearDownComponents(state);
+}
+
+}  // namespace Kit

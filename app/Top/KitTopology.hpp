@@ -1,0 +1,30 @@
+// ======================================================================
+// \title  KitTopology.hpp
+// \brief  Set up and tear down the kit's deployment (shared by both variants)
+// ======================================================================
+#ifndef KIT_KITTOPOLOGY_HPP
+#define KIT_KITTOPOLOGY_HPP
+
+#include "app/Top/KitTopologyAc.hpp"
+
+namespace Kit {
+
+//! Rate groups, in the order of the rate group driver's outputs
+constexpr FwIndexType RATE_GROUP_COUNT = 3;
+extern const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT];
+
+//! Instantiate, wire, configure and start the deployment (tasks included)
+void setupTopology(const TopologyState& state);
+
+//! Stop and join the tasks, release resources
+void teardownTopology(const TopologyState& state);
+
+//! Cycles rate group `rg` must complete in the first `ticks` ticks
+U32 expectedCycles(FwIndexType rg, U32 ticks);
+
+//! Opcode of the dispatcher's built-in NO_OP (its base ID + 0)
+FwOpcodeType noOpOpcode();
+
+}  // namespace Kit
+
+#endif

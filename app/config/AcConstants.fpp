@@ -1,0 +1,32 @@
+# Port-array sizes, cut to what the kit's topology uses: every port is an
+# object in RAM, so the F´ defaults (sized for a Linux Ref app) cost kilobytes.
+
+@ Members per active rate group (probe start + up to 3 components + probe end)
+constant ActiveRateGroupOutputPorts = 6
+
+constant PassiveRateGroupOutputPorts = 1
+
+@ Rate groups driven by the tick: 1 kHz, 100 Hz, 10 Hz
+constant RateGroupDriverRateGroupPorts = 3
+
+@ Components that own commands (cmdDisp, events, controller, load, timing + spare)
+constant CmdDispatcherComponentCommandPorts = 8
+
+@ Command sources: the uplink
+constant CmdDispatcherSequencePorts = 1
+
+constant SeqDispatcherSequencerPorts = 1
+constant CmdSplitterPorts = CmdDispatcherSequencePorts
+constant StaticMemoryAllocations = 1
+constant HealthPingPorts = 1
+constant FileDownCompletePorts = 1
+constant ComQueueComPorts = 1
+constant ComQueueBufferPorts = 1
+constant BufferRepeaterOutputPorts = 1
+constant DpManagerNumPorts = 1
+constant DpWriterNumProcPorts = 1
+constant FileNameStringSize = 64
+
+@ Text of an assert message, built on the asserting task's stack
+constant FwAssertTextSize = 128
+constant AssertFatalAdapterEventFileSize = FileNameStringSize

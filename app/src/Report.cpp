@@ -1,0 +1,103 @@
+// ======================================================================
+// \title  Report.cpp
+// \brief  The console record of a run
+// ======================================================================
+#include "app/src/Report.hpp"
+#include "app/Components/Timing/TickClock.hpp"
+#include "app/Top/GeneratedIds.hpp"
+#include "app/Top/KitTopology.hpp"
+
+#include <zephyr/kernel.h>
+#include <zephyr/sys/printk.h>
+#include <zephyr/version.h>
+
+#ifndef CONFIG_QEMU_ICOUNT_SHIFT
+#define CONFIG_QEMU_ICOUNT_SHIFT 0
+#endif
+
+namespace Kit {
+namespace Report {
+
+namespace {
+
+const char* responseName(const Fw::CmdResponse& response) {
+    switch (response.e) {
+        case Fw::CmdResponse::OK:
+            return "OK";
+        case Fw::CmdResponse::INVALID_OPCODE:
+            return "INVALID_OPCODE";
+        case Fw::CmdResponse::VALIDATION_ERROR:
+            return "VALIDATION_ERROR";
+        case Fw::CmdResponse::FORMAT_ERROR:
+            return "FORMAT_ERROR";
+        case Fw::CmdResponse::EXECUTION_ERROR:
+            return "EXECUTION_ERROR";
+        case Fw::CmdResponse::BUSY:
+            return "BUSY";
+        default:
+            return "UNKNOWN";
+    }
+}
+
+bool rateGroups(U32 ticks) {
+    bool passed = true;
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        const RateGroupRecord& rg = timing.record(i);
+        const U32 expected = expectedCycles(i, ticks);
+        const bool ok = (ticks == 0 || rg.cycles == expected) && rg.slips == 0 && !rg.running;
+        passed = passed && ok;
+        printk("KIT RG name=%s hz=%u cycles=%u expected=%u slips=%u late_starts=%u "
+               "latency_min=%u latency_max=%u exec_min=%u exec_max=%u period_min=%u period_max=%u\n",
+               rg.spec.name, static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor),
+               static_cast<unsigned>(rg.cycles), static_cast<unsigned>(expected), static_cast<unsigned>(rg.slips),
+               static_cast<unsigned>(rg.lateStarts), static_cast<unsigned>(rg.latency.min()),
+               static_cast<unsigned>(rg.latency.max()), static_cast<unsigned>(rg.exec.min()),
+               static_cast<unsigned>(rg.exec.max()), static_cast<unsigned>(rg.period.min()),
+               static_cast<unsigned>(rg.period.max()));
+    }
+    return passed;
+}
+
+bool commands() {
+    bool passed = true;
+    for (FwSizeType i = 0; i < uplink.frameCount(); i++) {
+        const Uplink::FrameResult& result = uplink.result(i);
+        const bool ok = result.sent && result.answered && result.response == Fw::CmdResponse::OK;
+        passed = passed && ok;
+        printk("KIT CMD frame=%u opcode=0x%x noop=%s response=%s\n", static_cast<unsigned>(i),
+               static_cast<unsigned>(result.opcode), (result.opcode == noOpOpcode()) ? "yes" : "no",
+               result.answered ? responseName(result.response) : "NONE");
+    }
+    return passed;
+}
+
+}  // namespace
+
+void banner(const char* variant) {
+    printk("KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "
+           "cycles_hz=%u icount_shift=%u run_ticks=%u\n",
+           variant, CONFIG_BOARD, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
+           static_cast<unsigned>(CONFIG_KIT_TICK_HZ), static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC),
+           static_cast<unsigned>(TickClock::cyclesPerSecond()), static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT),
+           static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
+}
+
+bool results(U32 ticks) {
+    const bool rgOk = rateGroups(ticks);
+    const bool cmdOk = commands();
+    const FwEventIdType noOpEvent = cmdDisp.getIdBase() + CmdDispIds::NO_OP_RECEIVED;
+    printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u\n",
+           static_cast<unsigned>(downlink.eventPackets()), static_cast<unsigned>(downlink.telemetryPackets()),
+           static_cast<unsigned>(downlink.malformedPackets()), static_cast<unsigned>(downlink.eventCount(noOpEvent)));
+    printk("KIT TICKS driven=%u fired=%u\n", static_cast<unsigned>(timing.ticksDriven()),
+           static_cast<unsigned>(TickClock::ticksFired()));
+    return rgOk && cmdOk;
+}
+
+void end(const char* variant, bool passed) {
+    printk("KIT END variant=%s result=%s uptime_ms=%u\n", variant, passed ? "PASS" : "FAIL",
+           static_cast<unsigned>(k_uptime_get_32()));
+}
+
+}  // namespace Report
+}  // namespace Kit

@@ -1,0 +1,59 @@
+// ======================================================================
+// \title  TickClock.cpp
+// \brief  The board tick on Zephyr: a periodic k_timer whose expiry function
+//         (run in the system clock ISR) counts and timestamps every tick
+// ======================================================================
+#include "app/Components/Timing/TickClock.hpp"
+#include "app/src/TickControl.hpp"
+#include "app/src/Variant.hpp"
+
+#include <zephyr/kernel.h>
+
+namespace Kit {
+namespace TickClock {
+
+namespace {
+struct k_timer s_timer;
+volatile U32 s_fired = 0;
+U32 s_stamps[STAMP_HISTORY];
+
+void onExpiry(struct k_timer* timer) {
+    (void)timer;
+    const U32 fired = s_fired;
+    s_stamps[fired % STAMP_HISTORY] = k_cycle_get_32();
+    s_fired = fired + 1;  // aligned 32-bit store: atomic on Cortex-M
+    Variant::onTickIsr();
+}
+}  // namespace
+
+U32 now() {
+    return k_cycle_get_32();
+}
+
+U32 cyclesPerSecond() {
+    return static_cast<U32>(sys_clock_hw_cycles_per_sec());
+}
+
+U32 ticksFired() {
+    return s_fired;
+}
+
+U32 stampOf(U32 tick) {
+    return s_stamps[tick % STAMP_HISTORY];
+}
+
+}  // namespace TickClock
+
+namespace TickControl {
+
+void start(U32 periodUs) {
+    k_timer_init(&TickClock::s_timer, TickClock::onExpiry, nullptr);
+    k_timer_start(&TickClock::s_timer, K_USEC(periodUs), K_USEC(periodUs));
+}
+
+void stop() {
+    k_timer_stop(&TickClock::s_timer);
+}
+
+}  // namespace TickControl
+}  // namespace Kit

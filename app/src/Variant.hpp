@@ -1,0 +1,34 @@
+// ======================================================================
+// \title  Variant.hpp
+// \brief  What each execution model supplies to the shared main loop
+//
+// The whole baremetal-vs-RTOS difference in the main loop is these four
+// functions: baremetal/Variant.cpp and rtos/Variant.cpp implement them.
+// ======================================================================
+#ifndef KIT_VARIANT_HPP
+#define KIT_VARIANT_HPP
+
+#include <Fw/FPrimeBasicTypes.hpp>
+
+namespace Kit {
+namespace Variant {
+
+//! "baremetal" or "rtos"
+const char* name();
+
+//! Called from the tick ISR after the tick is counted and stamped
+void onTickIsr();
+
+//! Return once more than `handled` ticks have fired (sleeping meanwhile)
+void waitForTick(U32 handled);
+
+//! After each tick has been handed to the rate group driver
+void afterTick();
+
+//! After the last tick: let queued work finish before results are read
+void drain();
+
+}  // namespace Variant
+}  // namespace Kit
+
+#endif

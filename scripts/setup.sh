@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# Provision everything the kit needs, idempotently: Debian packages, a pinned
+# Python venv, the west workspace in deps/, Zephyr's Python requirements and a
+# toolchain check. Safe to run again: each step skips what is already in place.
+set -euo pipefail
+
+KIT_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+VENV="$KIT_ROOT/.venv"
+WS="$KIT_ROOT/deps"
+
+say() { printf '[setup] %s\n' "$*"; }
+die() { printf '[setup] ERROR: %s\n' "$*" >&2; exit 1; }
+
+DEBIAN_PACKAGES=(gcc-arm-none-eabi picolibc-arm-none-eabi libstdc++-arm-none-eabi-picolibc
+  qemu-system-arm device-tree-compiler ninja-build gperf ccache googletest
+  python3-venv git file g++ make)
+
+install_debian_packages() {
+  local missing=()
+  for p in "${DEBIAN_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && { say "Debian packages: all present"; return; }
+  command -v apt-get >/dev/null || die "missing packages (${missing[*]}) and no apt-get: install them with your package manager"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  say "installing Debian packages: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null \
+    || die "apt-get could not install: ${missing[*]}"
+}
+
+# Re-install a requirements set only when its files change (stamp = their hash).
+pip_install_stamped() {
+  local name=$1; shift
+  local stamp="$VENV/.stamp-$name" hash
+  hash=$(cat "$@" | sha256sum | cut -d' ' -f1)
+  [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$hash" ] && { say "python ($name): up to date"; return; }
+  local args=()
+  for f in "$@"; do args+=(-r "$f"); done
+  say "python ($name): installing"
+  "$VENV/bin/pip" install -q "${args[@]}" || die "pip could not install $name requirements ($*)"
+  echo "$hash" >"$stamp"
+}
+
+make_venv() {
+  if [ ! -x "$VENV/bin/python" ]; then
+    say "creating $VENV"
+    python3 -m venv "$VENV" || die "python3 -m venv failed (install python3-venv)"
+    "$VENV/bin/pip" install -q --upgrade pip
+  fi
+  pip_install_stamped kit "$KIT_ROOT/scripts/requirements.txt"
+  # The kit's own tooling package (west kit ..., reports), editable.
+  [ -f "$VENV/.stamp-kitpkg" ] || { "$VENV/bin/pip" install -q -e "$KIT_ROOT/scripts" && touch "$VENV/.stamp-kitpkg"; }
+}
+
+# The west workspace lives in deps/ (ignored); deps/kit links back to the clone
+# so the clone is the manifest repository without west state outside it.
+init_workspace() {
+  mkdir -p "$WS/.west"
+  [ -L "$WS/kit" ] || ln -sfn .. "$WS/kit"
+  if [ ! -f "$WS/.west/config" ]; then
+    printf '[manifest]\npath = kit\nfile = west.yml\n\n[zephyr]\nbase = zephyr\n' >"$WS/.west/config"
+  fi
+}
+
+west_update() {
+  say "west update (pinned revisions from west.yml)"
+  local log
+  log=$(mktemp)
+  if ! (cd "$WS" && "$VENV/bin/west" update --narrow -o=--depth=1 >"$log" 2>&1); then
+    # Surface the URL git could not reach and the air-gapped fix.
+    local url
+    url=$(grep -oE "(https?|ssh|git)://[^ ']+" "$log" | head -1 || true)
+    tail -5 "$log" >&2
+    die "west update could not fetch ${url:-an upstream}.
+  Online: check the network/proxy. Air-gapped: serve a local mirror of each upstream and map it once per machine:
+    git config --global url.<mirror-path-or-url>.insteadOf <upstream-url>
+  (see README, 'Air-gapped setup'). Nothing in the kit changes."
+  fi
+  rm -f "$log"
+}
+
+# Upstream fixes the kit needs, kept as small explained patches in
+# <variant>/patches/<project>/*.patch and applied to the workspace copy.
+apply_patches() {
+  local patch project
+  for patch in "$KIT_ROOT"/*/patches/*/*.patch; do
+    [ -f "$patch" ] || continue
+    project=$(basename "$(dirname "$patch")")
+    [ -d "$WS/$project" ] || die "patch $patch names '$project', which is not in the workspace"
+    if git -C "$WS/$project" apply --reverse --check "$patch" 2>/dev/null; then
+      continue  # already applied
+    fi
+    git -C "$WS/$project" apply "$patch" || die "patch $patch does not apply to $project: was the pin in west.yml changed?"
+    say "patched $project: $(basename "$patch")"
+  done
+}
+
+check_toolchain() {
+  local cc
+  if [ -n "${ZEPHYR_SDK_INSTALL_DIR:-}" ] || [ "${ZEPHYR_TOOLCHAIN_VARIANT:-}" = zephyr ]; then
+    say "toolchain: Zephyr SDK (${ZEPHYR_SDK_INSTALL_DIR:-found by CMake})"
+    return
+  fi
+  cc=$(command -v arm-none-eabi-gcc) || die "arm-none-eabi-gcc not found: install Debian's gcc-arm-none-eabi, or set ZEPHYR_SDK_INSTALL_DIR"
+  [ -f /usr/lib/picolibc/arm-none-eabi/picolibc.specs ] || die "picolibc for arm-none-eabi not found: install picolibc-arm-none-eabi"
+  command -v qemu-system-arm >/dev/null || die "qemu-system-arm not found: install qemu-system-arm"
+  say "toolchain: $($cc --version | head -1) (gnuarmemb), $(qemu-system-arm --version | head -1)"
+}
+
+install_debian_packages
+make_venv
+init_workspace
+west_update
+apply_patches
+pip_install_stamped zephyr "$WS/zephyr/scripts/requirements-base.txt" \
+  "$WS/zephyr/scripts/requirements-build-test.txt" "$WS/zephyr/scripts/requirements-run-test.txt"
+check_toolchain
+say "ready: workspace $WS"
