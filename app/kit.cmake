@@ -129,7 +129,9 @@ zephyr_compile_definitions(
 # The toolchain file's FPRIME_PLATFORM is set inside Zephyr's own project()
 # scope and does not reach us; F´'s build artifacts stay in the build folder.
 set(FPRIME_PLATFORM Zephyr)
-set(FPRIME_INSTALL_DEST "${CMAKE_BINARY_DIR}/build-artifacts" CACHE PATH "F´ build artifacts")
+# (F´'s settings loader replaces a defaulted install prefix with one next to
+# settings.ini; a normal variable counts as given and keeps it here.)
+set(CMAKE_INSTALL_PREFIX "${CMAKE_BINARY_DIR}/build-artifacts")
 include("${KIT_DEPS}/fprime/cmake/FPrime.cmake")
 fprime_setup_included_code()
 

@@ -12,6 +12,9 @@
 
 #include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
 #include <zephyr/kernel.h>
+#include <zephyr/sys/printk.h>
+
+K_KERNEL_STACK_DECLARE(z_main_stack, CONFIG_MAIN_STACK_SIZE);
 
 namespace Kit {
 namespace Variant {
@@ -19,6 +22,15 @@ namespace Variant {
 namespace {
 // After the last tick: passes enough to empty every queue (the deepest holds 8)
 constexpr U32 DRAIN_PASSES = 32;
+
+// The one stack: main's. Painted below the live frame at start-up; the
+// high-water mark is where the paint ends.
+constexpr U32 PAINT = 0xCAFEF00Du;
+constexpr U32 PAINT_GUARD_BYTES = 128;  // below the current frame, left alone
+
+U32* stackBottom() {
+    return reinterpret_cast<U32*>(K_KERNEL_STACK_BUFFER(z_main_stack));
+}
 }  // namespace
 
 const char* name() {
@@ -46,6 +58,25 @@ void drain() {
     for (U32 pass = 0; pass < DRAIN_PASSES; pass++) {
         Os::Baremetal::TaskRunner::getSingleton().runAll();
     }
+}
+
+void prepareStacks() {
+    // Paint from the bottom of the stack up to a guard below this frame
+    const uintptr_t end = reinterpret_cast<uintptr_t>(__builtin_frame_address(0)) - PAINT_GUARD_BYTES;
+    for (U32* word = stackBottom(); reinterpret_cast<uintptr_t>(word) < end; word++) {
+        *word = PAINT;
+    }
+}
+
+void reportStacks() {
+    const U32 size = K_KERNEL_STACK_SIZEOF(z_main_stack);
+    const U32* word = stackBottom();
+    const U32* const top = word + size / sizeof(U32);
+    while (word < top && *word == PAINT) {
+        word++;
+    }
+    const U32 untouched = static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
+    printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(size), static_cast<unsigned>(size - untouched));
 }
 
 }  // namespace Variant

@@ -9,7 +9,9 @@
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/src/Variant.hpp"
 
+#include <zephyr/debug/thread_analyzer.h>
 #include <zephyr/kernel.h>
+#include <zephyr/sys/printk.h>
 
 namespace Kit {
 namespace Variant {
@@ -18,6 +20,11 @@ namespace {
 K_SEM_DEFINE(s_tickSem, 0, 1);
 // After the last tick: long enough for the slowest thread to empty its queue
 constexpr U32 DRAIN_MS = 50;
+
+void printStack(struct thread_analyzer_info* info) {
+    printk("KIT STACK name=%s size=%u used=%u\n", info->name, static_cast<unsigned>(info->stack_size),
+           static_cast<unsigned>(info->stack_used));
+}
 }  // namespace
 
 const char* name() {
@@ -40,6 +47,14 @@ void afterTick() {}
 
 void drain() {
     k_sleep(K_MSEC(DRAIN_MS));
+}
+
+void prepareStacks() {
+    // CONFIG_THREAD_ANALYZER paints every thread stack at creation
+}
+
+void reportStacks() {
+    thread_analyzer_run(printStack, 0);
 }
 
 }  // namespace Variant

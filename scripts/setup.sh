@@ -54,13 +54,12 @@ make_venv() {
   [ -f "$VENV/.stamp-kitpkg" ] || { "$VENV/bin/pip" install -q -e "$KIT_ROOT/scripts" && touch "$VENV/.stamp-kitpkg"; }
 }
 
-# The west workspace lives in deps/ (ignored); deps/kit links back to the clone
-# so the clone is the manifest repository without west state outside it.
+# The clone itself is the west workspace (topdir): .west/ here, upstreams in
+# deps/ (paths in west.yml), both ignored by git.
 init_workspace() {
-  mkdir -p "$WS/.west"
-  [ -L "$WS/kit" ] || ln -sfn .. "$WS/kit"
-  if [ ! -f "$WS/.west/config" ]; then
-    printf '[manifest]\npath = kit\nfile = west.yml\n\n[zephyr]\nbase = zephyr\n' >"$WS/.west/config"
+  if [ ! -f "$KIT_ROOT/.west/config" ]; then
+    mkdir -p "$KIT_ROOT/.west"
+    printf '[manifest]\npath = .\nfile = west.yml\n\n[zephyr]\nbase = deps/zephyr\n' >"$KIT_ROOT/.west/config"
   fi
 }
 
@@ -68,7 +67,7 @@ west_update() {
   say "west update (pinned revisions from west.yml)"
   local log
   log=$(mktemp)
-  if ! (cd "$WS" && "$VENV/bin/west" update --narrow -o=--depth=1 >"$log" 2>&1); then
+  if ! (cd "$KIT_ROOT" && "$VENV/bin/west" update --narrow -o=--depth=1 >"$log" 2>&1); then
     # Surface the URL git could not reach and the air-gapped fix.
     local url
     url=$(grep -oE "(https?|ssh|git)://[^ ']+" "$log" | head -1 || true)

@@ -17,16 +17,19 @@ module Kit {
   }
 
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
-  # stack and ignores them). Sized from the thread analyzer's high-water
-  # marks of `west build -T app/kit.rtos` with headroom; each must fit
-  # CONFIG_DYNAMIC_THREAD_STACK_SIZE in rtos/variant.conf.
+  # stack and ignores them). From the thread analyzer's high-water marks
+  # ("KIT STACK" lines of a nominal run): cmdDisp 1320 B, rg10Hz 976,
+  # events 640, rg100Hz/rg1kHz 528, tlmSend 368. Zephyr's thread pool has one
+  # slot size for all, so every task gets the largest need plus ~35% for
+  # paths a nominal run does not take (asserts, fault events): 1792 B, the
+  # CONFIG_DYNAMIC_THREAD_STACK_SIZE of rtos/variant.conf.
   module Stacks {
-    constant rg1kHz = 1024
-    constant rg100Hz = 1024
-    constant rg10Hz = 1024
-    constant cmdDisp = 1024
-    constant events = 1024
-    constant tlmSend = 1024
+    constant rg1kHz = 1792
+    constant rg100Hz = 1792
+    constant rg10Hz = 1792
+    constant cmdDisp = 1792
+    constant events = 1792
+    constant tlmSend = 1792
   }
 
   # Queue depths: a rate group holds one pending cycle (a second is a slip);

@@ -2,7 +2,7 @@
 // \title  Variant.hpp
 // \brief  What each execution model supplies to the shared main loop
 //
-// The whole baremetal-vs-RTOS difference in the main loop is these four
+// The whole baremetal-vs-RTOS difference in the main loop is these
 // functions: baremetal/Variant.cpp and rtos/Variant.cpp implement them.
 // ======================================================================
 #ifndef KIT_VARIANT_HPP
@@ -27,6 +27,12 @@ void afterTick();
 
 //! After the last tick: let queued work finish before results are read
 void drain();
+
+//! Before setup: prepare stack measurement (baremetal paints the main stack)
+void prepareStacks();
+
+//! Print a "KIT STACK" line per stack with its size and high-water mark
+void reportStacks();
 
 }  // namespace Variant
 }  // namespace Kit

@@ -43,11 +43,13 @@ void runTicks(U32 ticks) {
 
 int main() {
     Kit::Report::banner(Kit::Variant::name());
+    Kit::Variant::prepareStacks();
     Os::init();
     Kit::TopologyState state;
     Kit::setupTopology(state);
     runTicks(CONFIG_KIT_RUN_TICKS);
     const bool passed = Kit::Report::results(CONFIG_KIT_RUN_TICKS);
+    Kit::Variant::reportStacks();
     Kit::Report::end(Kit::Variant::name(), passed);
     return 0;
 }
