@@ -96,6 +96,18 @@ apply_patches() {
   done
 }
 
+# F´'s unit tests build googletest from fprime/googletest, a git submodule that
+# west does not fetch; Debian's googletest is the same release (1.12.1) as source.
+provide_googletest() {
+  local dst="$WS/fprime/googletest" src=/usr/src/googletest
+  [ -f "$dst/CMakeLists.txt" ] && return
+  [ -f "$src/CMakeLists.txt" ] || die "googletest sources not found at $src: install Debian's googletest"
+  rmdir "$dst" 2>/dev/null || true
+  [ -e "$dst" ] && die "$dst exists but holds no googletest: remove it and run setup again"
+  ln -s "$src" "$dst"
+  say "googletest: $dst -> $src"
+}
+
 check_toolchain() {
   local cc
   if [ -n "${ZEPHYR_SDK_INSTALL_DIR:-}" ] || [ "${ZEPHYR_TOOLCHAIN_VARIANT:-}" = zephyr ]; then
@@ -113,6 +125,7 @@ make_venv
 init_workspace
 west_update
 apply_patches
+provide_googletest
 pip_install_stamped zephyr "$WS/zephyr/scripts/requirements-base.txt" \
   "$WS/zephyr/scripts/requirements-build-test.txt" "$WS/zephyr/scripts/requirements-run-test.txt"
 check_toolchain

@@ -1,0 +1,26 @@
+#include "app/Components/Controller/test/ut/ControllerTester.hpp"
+
+TEST(Controller, SetpointInRangeIsAccepted) {
+    Kit::ControllerTester tester;
+    tester.setpointInRangeIsAccepted();
+}
+
+TEST(Controller, SetpointOutOfRangeIsRejected) {
+    Kit::ControllerTester tester;
+    tester.setpointOutOfRangeIsRejected();
+}
+
+TEST(Controller, LoopSettlesOnTheSetpoint) {
+    Kit::ControllerTester tester;
+    tester.loopSettlesOnTheSetpoint();
+}
+
+TEST(Controller, TelemetryIsDecimated) {
+    Kit::ControllerTester tester;
+    tester.telemetryIsDecimated();
+}
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

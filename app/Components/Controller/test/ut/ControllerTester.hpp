@@ -1,0 +1,32 @@
+#ifndef KIT_CONTROLLERTESTER_HPP
+#define KIT_CONTROLLERTESTER_HPP
+
+#include "app/Components/Controller/Controller.hpp"
+#include "app/Components/Controller/ControllerGTestBase.hpp"
+
+namespace Kit {
+
+class ControllerTester : public ControllerGTestBase {
+  public:
+    static const FwSizeType MAX_HISTORY_SIZE = 128;
+    static const FwEnumStoreType TEST_INSTANCE_ID = 0;
+
+    ControllerTester();
+    ~ControllerTester();
+
+    void setpointInRangeIsAccepted();
+    void setpointOutOfRangeIsRejected();
+    void loopSettlesOnTheSetpoint();
+    void telemetryIsDecimated();
+
+  private:
+    void connectPorts();
+    void initComponents();
+    ControlStatus status();
+
+    Controller component;
+};
+
+}  // namespace Kit
+
+#endif

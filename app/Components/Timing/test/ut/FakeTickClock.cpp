@@ -1,0 +1,37 @@
+#include "app/Components/Timing/test/ut/FakeTickClock.hpp"
+
+namespace Kit {
+namespace FakeTickClock {
+U32 now = 0;
+U32 fired = 0;
+U32 stamps[TickClock::STAMP_HISTORY] = {};
+
+void reset() {
+    now = 0;
+    fired = 0;
+    for (U32& stamp : stamps) {
+        stamp = 0;
+    }
+}
+
+void fire(U32 tick, U32 at) {
+    stamps[tick % TickClock::STAMP_HISTORY] = at;
+    fired = tick + 1;
+}
+}  // namespace FakeTickClock
+
+namespace TickClock {
+U32 now() {
+    return FakeTickClock::now;
+}
+U32 cyclesPerSecond() {
+    return 12000000u;
+}
+U32 ticksFired() {
+    return FakeTickClock::fired;
+}
+U32 stampOf(U32 tick) {
+    return FakeTickClock::stamps[tick % STAMP_HISTORY];
+}
+}  // namespace TickClock
+}  // namespace Kit

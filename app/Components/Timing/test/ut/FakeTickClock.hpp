@@ -1,0 +1,18 @@
+// A tick clock the test sets by hand (stands in for app/src/TickClock.cpp)
+#ifndef KIT_FAKETICKCLOCK_HPP
+#define KIT_FAKETICKCLOCK_HPP
+
+#include "app/Components/Timing/TickClock.hpp"
+
+namespace Kit {
+namespace FakeTickClock {
+extern U32 now;
+extern U32 fired;
+extern U32 stamps[TickClock::STAMP_HISTORY];
+void reset();
+//! Fire tick `tick` at counter value `at`
+void fire(U32 tick, U32 at);
+}  // namespace FakeTickClock
+}  // namespace Kit
+
+#endif

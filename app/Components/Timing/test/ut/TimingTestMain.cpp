@@ -1,0 +1,26 @@
+#include "app/Components/Timing/test/ut/TimingTester.hpp"
+
+TEST(Timing, TickDrivesTheRateGroupDriver) {
+    Kit::TimingTester tester;
+    tester.tickDrivesTheRateGroupDriver();
+}
+
+TEST(Timing, OnTimeCyclesRecordLatencyAndExecution) {
+    Kit::TimingTester tester;
+    tester.onTimeCyclesRecordLatencyAndExecution();
+}
+
+TEST(Timing, LateEndIsASlipWithEvent) {
+    Kit::TimingTester tester;
+    tester.lateEndIsASlipWithEvent();
+}
+
+TEST(Timing, LatencyAcrossTheCounterWrap) {
+    Kit::TimingTester tester;
+    tester.latencyAcrossTheCounterWrap();
+}
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}

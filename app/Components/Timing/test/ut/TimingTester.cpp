@@ -1,0 +1,81 @@
+#include "app/Components/Timing/test/ut/TimingTester.hpp"
+#include "app/Components/Timing/test/ut/FakeTickClock.hpp"
+
+namespace Kit {
+
+namespace {
+constexpr U32 PERIOD = 12000;  // 1 kHz at 12 MHz
+const RateGroupSpec SPECS[3] = {{"rg1kHz", 1, 0}, {"rg100Hz", 10, 1}, {"rg10Hz", 100, 2}};
+}  // namespace
+
+TimingTester::TimingTester()
+    : TimingGTestBase("TimingTester", MAX_HISTORY_SIZE), component("Timing"), m_cycleOuts(0) {
+    this->initComponents();
+    this->connectPorts();
+    FakeTickClock::reset();
+    component.configure(SPECS, 3);
+}
+
+TimingTester::~TimingTester() {}
+
+void TimingTester::from_CycleOut_handler(FwIndexType portNum, Os::RawTime& cycleStart) {
+    (void)portNum;
+    (void)cycleStart;
+    m_cycleOuts++;
+}
+
+void TimingTester::runFastCycle(U32 cycle, U32 latency, U32 exec, U32 firedAtEnd) {
+    const U32 release = cycle * PERIOD;
+    FakeTickClock::fire(cycle, release);
+    FakeTickClock::now = release + latency;
+    this->invoke_to_cycleStart(0, 0);
+    FakeTickClock::now = release + latency + exec;
+    FakeTickClock::fired = firedAtEnd;
+    this->invoke_to_cycleEnd(0, 0);
+}
+
+void TimingTester::tickDrivesTheRateGroupDriver() {
+    component.tick();
+    component.tick();
+    EXPECT_EQ(m_cycleOuts, 2u);
+    EXPECT_EQ(component.ticksDriven(), 2u);
+}
+
+void TimingTester::onTimeCyclesRecordLatencyAndExecution() {
+    runFastCycle(0, 500, 100, 1);
+    runFastCycle(1, 700, 300, 2);
+    const RateGroupRecord& rg = component.record(0);
+    EXPECT_EQ(rg.cycles, 2u);
+    EXPECT_EQ(rg.slips, 0u);
+    EXPECT_EQ(rg.latency.min(), 500u);
+    EXPECT_EQ(rg.latency.max(), 700u);
+    EXPECT_EQ(rg.exec.max(), 300u);
+    EXPECT_EQ(rg.period.max(), PERIOD + 200u);  // start to start
+    ASSERT_EVENTS_SIZE(0);
+}
+
+void TimingTester::lateEndIsASlipWithEvent() {
+    runFastCycle(0, 500, 100, 1);
+    // Cycle 1 still running when ticks 2 and 3 fire: two ticks late
+    runFastCycle(1, 500, 2 * PERIOD, 4);
+    EXPECT_EQ(component.record(0).slips, 1u);
+    EXPECT_EQ(component.totalSlips(), 1u);
+    ASSERT_EVENTS_RateGroupSlip_SIZE(1);
+    ASSERT_EVENTS_RateGroupSlip(0, 0, 1, 2);
+    ASSERT_TLM_Slips(0, 1);
+}
+
+void TimingTester::latencyAcrossTheCounterWrap() {
+    // The tick is stamped just before the 32-bit counter wraps, the cycle
+    // starts just after it.
+    FakeTickClock::fire(0, 0xFFFFFF00u);
+    FakeTickClock::now = 0x00000100u;
+    this->invoke_to_cycleStart(0, 0);
+    FakeTickClock::now = 0x00000180u;
+    this->invoke_to_cycleEnd(0, 0);
+    EXPECT_EQ(component.record(0).latency.max(), 0x200u);
+    EXPECT_EQ(component.record(0).exec.max(), 0x80u);
+    EXPECT_EQ(component.record(0).slips, 0u);
+}
+
+}  // namespace Kit
