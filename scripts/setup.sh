@@ -50,8 +50,13 @@ make_venv() {
     "$VENV/bin/pip" install -q --upgrade pip
   fi
   pip_install_stamped kit "$KIT_ROOT/scripts/requirements.txt"
-  # The kit's own tooling package (west kit ..., reports), editable.
-  [ -f "$VENV/.stamp-kitpkg" ] || { "$VENV/bin/pip" install -q -e "$KIT_ROOT/scripts" && touch "$VENV/.stamp-kitpkg"; }
+  # The kit's own tooling package (scripts/kittools: kit CLI, west kit), editable
+  local stamp="$VENV/.stamp-kittools" hash
+  hash=$(sha256sum "$KIT_ROOT/scripts/pyproject.toml" | cut -d' ' -f1)
+  if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$hash" ]; then
+    "$VENV/bin/pip" install -q --no-deps -e "$KIT_ROOT/scripts" || die "pip could not install the kit's tooling (scripts/)"
+    echo "$hash" >"$stamp"
+  fi
 }
 
 # The clone itself is the west workspace (topdir): .west/ here, upstreams in

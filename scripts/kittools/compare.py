@@ -1,0 +1,90 @@
+"""Side-by-side comparison of the variants' runs: a Markdown table (what a
+reviewer pastes) and the same numbers as JSON."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from .console import Run
+from .footprint import Footprint
+
+
+@dataclass(frozen=True)
+class VariantData:
+    """What the comparison needs of one variant's result."""
+
+    variant: str
+    footprint: Footprint
+    run: Run
+
+
+def _us(cycles: int, cycles_hz: int) -> float:
+    return cycles * 1e6 / cycles_hz
+
+
+def metrics(data: VariantData) -> dict[str, float]:
+    """Flat metric name -> value for one variant (bytes, microseconds, counts)."""
+    run = data.run
+    cycles_hz = run.one("BANNER").int("cycles_hz")
+    values: dict[str, float] = {
+        "ROM (bytes)": data.footprint.rom,
+        "RAM, static (bytes)": data.footprint.ram,
+    }
+    stacks = run.of_kind("STACK")
+    values["stacks reserved (bytes)"] = sum(s.int("size") for s in stacks)
+    values["stacks used, peak (bytes)"] = sum(s.int("used") for s in stacks)
+    for rg in run.of_kind("RG"):
+        name = rg.fields["name"]
+        values[f"{name} latency max (us)"] = _us(rg.int("latency_max"), cycles_hz)
+        values[f"{name} exec max (us)"] = _us(rg.int("exec_max"), cycles_hz)
+        values[f"{name} period max (us)"] = _us(rg.int("period_max"), cycles_hz)
+        values[f"{name} slips"] = rg.int("slips")
+    return values
+
+
+def _fmt(value: float) -> str:
+    return f"{value:,.0f}" if float(value).is_integer() else f"{value:,.1f}"
+
+
+def conditions(data: VariantData) -> dict[str, str]:
+    banner = data.run.one("BANNER").fields
+    keys = ("board", "kit", "zephyr", "fprime", "tick_hz", "sys_tick_hz", "cycles_hz", "icount_shift", "run_ticks")
+    return {k: banner[k] for k in keys if k in banner}
+
+
+def markdown(left: VariantData, right: VariantData) -> str:
+    """The comparison table, conditions first."""
+    cond = conditions(left)
+    a, b = metrics(left), metrics(right)
+    lines = [
+        f"Conditions: board {cond.get('board')}, kit {cond.get('kit')}, Zephyr {cond.get('zephyr')}, "
+        f"F´ {cond.get('fprime')}, tick {cond.get('tick_hz')} Hz, counter {cond.get('cycles_hz')} Hz, "
+        f"QEMU icount shift {cond.get('icount_shift')}, {cond.get('run_ticks')} ticks. "
+        "Times are QEMU virtual time: they compare software paths, not hardware latency.",
+        "",
+        f"| metric | {left.variant} | {right.variant} | {right.variant} − {left.variant} |",
+        "|---|---:|---:|---:|",
+    ]
+    for name in a:
+        if name in b:
+            lines.append(f"| {name} | {_fmt(a[name])} | {_fmt(b[name])} | {_fmt(b[name] - a[name])} |")
+    verdicts = ", ".join(f"{d.variant} {'PASS' if d.run.passed else 'FAIL'}" for d in (left, right))
+    lines += ["", f"Run verdicts: {verdicts}."]
+    return "\n".join(lines)
+
+
+def as_json(results: list[VariantData]) -> dict[str, Any]:
+    return {
+        "conditions": conditions(results[0]),
+        "variants": {
+            d.variant: {
+                "passed": d.run.passed,
+                "footprint": {"rom": d.footprint.rom, "ram": d.footprint.ram,
+                              "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size},
+                "metrics": metrics(d),
+                "records": [{"kind": r.kind, **r.fields} for r in d.run.records],
+            }
+            for d in results
+        },
+    }

@@ -1,0 +1,69 @@
+"""Static ROM and RAM of a Zephyr build, from its ELF and its .config.
+
+ROM is how far the allocated sections loaded into flash extend (code,
+read-only data, the initial values of .data); RAM how far those placed in
+SRAM extend (.data, .bss, .noinit, stacks, heap arena), alignment gaps
+included. That is the linker's "Memory region" accounting, recomputed so it
+is available after any build, not only after a link.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from elftools.elf.constants import SH_FLAGS
+from elftools.elf.elffile import ELFFile
+
+
+@dataclass(frozen=True)
+class Footprint:
+    rom: int
+    ram: int
+    rom_size: int
+    ram_size: int
+
+
+def _kconfig(dotconfig: Path) -> dict[str, str]:
+    values: dict[str, str] = {}
+    for line in dotconfig.read_text().splitlines():
+        if line.startswith("CONFIG_") and "=" in line:
+            key, value = line.split("=", 1)
+            values[key] = value.strip('"')
+    return values
+
+
+def measure(build_dir: Path) -> Footprint:
+    """Footprint of the Zephyr build in `build_dir`."""
+    elf_path = build_dir / "zephyr" / "zephyr.elf"
+    config_path = build_dir / "zephyr" / ".config"
+    for path in (elf_path, config_path):
+        if not path.is_file():
+            raise FileNotFoundError(f"{path} is missing: is {build_dir} a finished Zephyr build?")
+    config = _kconfig(config_path)
+    flash = (int(config["CONFIG_FLASH_BASE_ADDRESS"], 0), int(config["CONFIG_FLASH_SIZE"]) * 1024)
+    sram = (int(config["CONFIG_SRAM_BASE_ADDRESS"], 0), int(config["CONFIG_SRAM_SIZE"]) * 1024)
+
+    def inside(address: int, region: tuple[int, int]) -> bool:
+        return region[0] <= address < region[0] + region[1]
+
+    rom_end, ram_end = flash[0], sram[0]
+    with elf_path.open("rb") as stream:
+        elf = ELFFile(stream)
+        # Load addresses come from the program headers: a section's LMA is its
+        # VMA shifted by the offset of the segment that holds it.
+        segments = [s for s in elf.iter_segments() if s["p_type"] == "PT_LOAD"]
+        for section in elf.iter_sections():
+            if not section["sh_flags"] & SH_FLAGS.SHF_ALLOC or section["sh_size"] == 0:
+                continue
+            vma, size = section["sh_addr"], section["sh_size"]
+            lma = vma
+            for seg in segments:
+                if seg["p_vaddr"] <= vma < seg["p_vaddr"] + seg["p_memsz"]:
+                    lma = seg["p_paddr"] + (vma - seg["p_vaddr"])
+                    break
+            if inside(vma, sram):
+                ram_end = max(ram_end, vma + size)
+            if inside(lma, flash) and section["sh_type"] != "SHT_NOBITS":
+                rom_end = max(rom_end, lma + size)
+    return Footprint(rom=rom_end - flash[0], ram=ram_end - sram[0], rom_size=flash[1], ram_size=sram[1])

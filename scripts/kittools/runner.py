@@ -1,0 +1,91 @@
+"""Build a variant with west and run it under QEMU until its end line."""
+
+from __future__ import annotations
+
+import os
+import selectors
+import signal
+import subprocess
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from . import console
+from .footprint import Footprint, measure
+from .workspace import KIT_ROOT, KitError, check_board, check_variant, environment
+
+RUN_TIMEOUT_S = 180.0
+
+
+@dataclass
+class VariantResult:
+    variant: str
+    board: str
+    build_dir: Path
+    footprint: Footprint
+    run: console.Run
+    console_text: str
+
+
+def _tail(text: str, lines: int = 25) -> str:
+    return "\n".join(text.splitlines()[-lines:])
+
+
+def build(variant: str, board: str, build_dir: Path, log: Path) -> None:
+    """`west build -b <board> -T app/kit.<variant>` into build_dir."""
+    check_variant(variant)
+    check_board(board)
+    command = ["west", "build", "-b", board, "-d", str(build_dir), "-T", f"app/kit.{variant}"]
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("w") as out:
+        result = subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=out, stderr=subprocess.STDOUT)
+    if result.returncode != 0:
+        raise KitError(f"build of {variant} failed ({' '.join(command)}); log {log}:\n{_tail(log.read_text())}")
+
+
+def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S,
+        on_line: Callable[[str], None] | None = None) -> str:
+    """Run the build in QEMU (`west build -t run`) until the firmware's end
+    line or a fatal error, then stop QEMU. Returns the console text."""
+    command = ["west", "build", "-d", str(build_dir), "-t", "run"]
+    process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    assert process.stdout is not None
+    lines: list[str] = []
+    finished = False
+    deadline = time.monotonic() + timeout_s
+    selector = selectors.DefaultSelector()
+    selector.register(process.stdout, selectors.EVENT_READ)
+    try:
+        while time.monotonic() < deadline and not finished:
+            if not selector.select(timeout=1.0):
+                if process.poll() is not None:
+                    break
+                continue
+            line = process.stdout.readline()
+            if line == "":
+                break
+            lines.append(line.rstrip("\n"))
+            if on_line is not None:
+                on_line(lines[-1])
+            finished = line.startswith("KIT END") or "ZEPHYR FATAL ERROR" in line
+    finally:
+        selector.close()
+        if process.poll() is None:
+            os.killpg(process.pid, signal.SIGTERM)
+            process.wait(timeout=10)
+    text = "\n".join(lines)
+    log.write_text(text + "\n")
+    if not finished:
+        raise KitError(f"the run in {build_dir} did not reach its end line within {timeout_s:.0f} s; log {log}:\n"
+                       f"{_tail(text)}")
+    return text
+
+
+def build_and_run(variant: str, board: str, out_dir: Path) -> VariantResult:
+    build_dir = out_dir / f"{check_board(board)}-{variant}"
+    build(variant, board, build_dir, out_dir / f"{variant}.build.log")
+    text = run(build_dir, out_dir / f"{variant}.console.log")
+    parsed = console.parse(text)
+    return VariantResult(variant, board, build_dir, measure(build_dir), parsed, text)

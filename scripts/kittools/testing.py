@@ -1,0 +1,101 @@
+"""The kit's test suite: twister under QEMU, host unit tests (googletest),
+and the tooling's own pytest, with one closing count."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from pathlib import Path
+
+from .workspace import KIT_ROOT, KitError, environment
+
+HOST_BUILD = KIT_ROOT / "build" / "host-ut"
+TWISTER_OUT = KIT_ROOT / "twister-out"
+
+
+@dataclass
+class Tally:
+    passed: int = 0
+    failed: int = 0
+
+    def add(self, other: "Tally") -> None:
+        self.passed += other.passed
+        self.failed += other.failed
+
+
+def _run(command: list[str], log: Path, cwd: Path = KIT_ROOT) -> int:
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("w") as out:
+        return subprocess.run(command, cwd=cwd, env=environment(), stdout=out, stderr=subprocess.STDOUT).returncode
+
+
+def twister_tally(report: Path) -> Tally:
+    """Count twister's test cases: passed, or failed (failed, error, blocked)."""
+    if not report.is_file():
+        raise KitError(f"twister wrote no report at {report}")
+    tally = Tally()
+    for suite in json.loads(report.read_text()).get("testsuites", []):
+        status = suite.get("status")
+        if status == "passed":
+            tally.passed += 1
+        elif status in ("failed", "error", "blocked"):
+            tally.failed += 1
+    return tally
+
+
+def run_twister(platform: str, log_dir: Path) -> Tally:
+    command = ["west", "twister", "-T", "tests", "-p", platform, "-j", "1", "--inline-logs",
+               "--outdir", str(TWISTER_OUT), "--overflow-as-errors"]
+    code = _run(command, log_dir / "twister.log")
+    tally = twister_tally(TWISTER_OUT / "twister.json")
+    if code != 0 and tally.failed == 0:
+        tally.failed += 1  # twister itself failed (for example a configuration error)
+    return tally
+
+
+def gtest_tally(report: Path) -> Tally:
+    data = json.loads(report.read_text())
+    return Tally(passed=data["tests"] - data["failures"] - data.get("errors", 0),
+                 failed=data["failures"] + data.get("errors", 0))
+
+
+def run_host_tests(log_dir: Path) -> Tally:
+    tests = KIT_ROOT / "tests" / "host"
+    configure = ["cmake", "-S", str(tests), "-B", str(HOST_BUILD), "-G", "Ninja", "-DBUILD_TESTING=ON"]
+    if _run(configure, log_dir / "host-configure.log") != 0:
+        raise KitError(f"host test configuration failed; see {log_dir / 'host-configure.log'}")
+    if _run(["cmake", "--build", str(HOST_BUILD), "--target", "kit_host_tests"], log_dir / "host-build.log") != 0:
+        raise KitError(f"host test build failed; see {log_dir / 'host-build.log'}")
+    tally = Tally()
+    for exe in sorted((HOST_BUILD / "bin").glob("*/*")):
+        if not (exe.name.startswith("app_") or exe.name.startswith("Kit_")):
+            continue
+        report = log_dir / f"{exe.name}.json"
+        report.unlink(missing_ok=True)
+        code = _run([str(exe), f"--gtest_output=json:{report}"], log_dir / f"{exe.name}.log")
+        if report.is_file():
+            tally.add(gtest_tally(report))
+        if code != 0 and not report.is_file():
+            tally.failed += 1  # crashed before writing its report
+    if tally.passed + tally.failed == 0:
+        raise KitError(f"no host test executable found in {HOST_BUILD / 'bin'}")
+    return tally
+
+
+def junit_tally(report: Path) -> Tally:
+    root = ET.parse(report).getroot()
+    suites = [root] if root.tag == "testsuite" else list(root)
+    tests = sum(int(s.get("tests", 0)) for s in suites)
+    bad = sum(int(s.get("failures", 0)) + int(s.get("errors", 0)) for s in suites)
+    return Tally(passed=tests - bad - sum(int(s.get("skipped", 0)) for s in suites), failed=bad)
+
+
+def run_pytest(log_dir: Path) -> Tally:
+    report = log_dir / "pytest.xml"
+    code = _run(["python", "-m", "pytest", "-q", f"--junitxml={report}"], log_dir / "pytest.log",
+                cwd=KIT_ROOT / "scripts")
+    if not report.is_file():
+        raise KitError(f"pytest wrote no report (exit {code}); see {log_dir / 'pytest.log'}")
+    return junit_tally(report)

@@ -1,0 +1,65 @@
+"""Where things are, and the checks every command makes before it starts."""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+KIT_ROOT = Path(__file__).resolve().parents[2]
+DEPS = KIT_ROOT / "deps"
+BOARDS = KIT_ROOT / "boards"
+VARIANTS = ("baremetal", "rtos")
+UPSTREAMS = ("zephyr", "fprime", "fprime-baremetal", "fprime-zephyr")
+
+
+class KitError(RuntimeError):
+    """A problem the user can fix; the message says how."""
+
+
+def ported_boards() -> list[str]:
+    return sorted(p.name for p in BOARDS.iterdir() if p.is_dir())
+
+
+def check_board(board: str) -> str:
+    """The board's kit folder name; KitError if the kit has no port for it."""
+    name = board.split("/", 1)[0]
+    if not (BOARDS / name).is_dir():
+        raise KitError(
+            f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards())}. "
+            "To bring the kit to a new board, see docs/porting.md."
+        )
+    return name
+
+
+def check_variant(variant: str) -> None:
+    if variant not in VARIANTS:
+        raise KitError(f"unknown variant '{variant}'; the variants are: {', '.join(VARIANTS)}")
+
+
+def check_provisioned() -> None:
+    missing = [name for name in UPSTREAMS if not (DEPS / name).is_dir()]
+    if missing or not (KIT_ROOT / ".west" / "config").is_file():
+        what = ", ".join(missing) if missing else ".west/config"
+        raise KitError(f"the workspace is not provisioned (missing: {what}). Run scripts/setup.sh first.")
+
+
+def environment() -> dict[str, str]:
+    """Environment for west, twister and CMake: the kit's venv first, and
+    Debian's arm-none-eabi GCC through Zephyr's gnuarmemb variant unless a
+    toolchain (for example a Zephyr SDK) is already selected."""
+    env = dict(os.environ)
+    venv_bin = KIT_ROOT / ".venv" / "bin"
+    env["PATH"] = f"{venv_bin}{os.pathsep}{env.get('PATH', '')}"
+    env["VIRTUAL_ENV"] = str(KIT_ROOT / ".venv")
+    env["ZEPHYR_BASE"] = str(DEPS / "zephyr")
+    if "ZEPHYR_TOOLCHAIN_VARIANT" not in env and "ZEPHYR_SDK_INSTALL_DIR" not in env:
+        gcc = shutil.which("arm-none-eabi-gcc", path=env["PATH"])
+        if gcc is None:
+            raise KitError(
+                "no ARM toolchain: install Debian's gcc-arm-none-eabi (scripts/setup.sh does) "
+                "or set ZEPHYR_SDK_INSTALL_DIR to use a Zephyr SDK"
+            )
+        env["ZEPHYR_TOOLCHAIN_VARIANT"] = "gnuarmemb"
+        env["GNUARMEMB_TOOLCHAIN_PATH"] = str(Path(gcc).resolve().parent.parent)
+    return env

@@ -1,0 +1,14 @@
+"""A console log in the firmware's format (shape of app/src/Report.cpp output)."""
+
+
+def console_log(variant: str = "baremetal", slips: int = 0, result: str = "PASS", stack_used: int = 1000) -> str:
+    return "\n".join([
+        "*** Booting Zephyr OS build 0d6f47a50097 ***",
+        f"KIT BANNER variant={variant} board=qemu_cortex_m3 kit=abc zephyr=4.0.0/0d6f fprime=6c80 tick_hz=1000 "
+        "sys_tick_hz=1000 cycles_hz=12000000 icount_shift=4 run_ticks=2000",
+        f"KIT RG name=rg1kHz hz=1000 cycles=2000 expected=2000 slips={slips} late_starts=0 latency_min=550 "
+        "latency_max=1200 exec_min=73 exec_max=2400 period_min=11842 period_max=12157",
+        "KIT CMD frame=0 opcode=0x500 noop=yes response=OK",
+        f"KIT STACK name=main size=2048 used={stack_used}",
+        f"KIT END variant={variant} result={result} uptime_ms=2005",
+    ])

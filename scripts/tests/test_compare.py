@@ -1,0 +1,31 @@
+from kittools import compare, console
+from kittools.footprint import Footprint
+from sample_console import console_log
+
+
+def _data(variant: str, rom: int, ram: int, **kwargs) -> compare.VariantData:
+    return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536), console.parse(console_log(variant, **kwargs)))
+
+
+def test_metrics_convert_cycles_to_microseconds():
+    values = compare.metrics(_data("baremetal", 1000, 500))
+    assert values["rg1kHz latency max (us)"] == 100.0  # 1200 cycles at 12 MHz
+    assert values["rg1kHz exec max (us)"] == 200.0
+    assert values["stacks reserved (bytes)"] == 2048
+    assert values["ROM (bytes)"] == 1000
+
+
+def test_markdown_puts_conditions_first_and_shows_deltas():
+    table = compare.markdown(_data("baremetal", 90000, 30000), _data("rtos", 100000, 44000, stack_used=1500))
+    first = table.splitlines()[0]
+    assert first.startswith("Conditions:") and "icount shift 4" in first and "not hardware latency" in first
+    assert "| ROM (bytes) | 90,000 | 100,000 | 10,000 |" in table
+    assert "| stacks used, peak (bytes) | 1,000 | 1,500 | 500 |" in table
+    assert "Run verdicts: baremetal PASS, rtos PASS." in table
+
+
+def test_json_carries_records_and_footprints():
+    data = compare.as_json([_data("baremetal", 1, 2), _data("rtos", 3, 4, slips=2)])
+    assert data["variants"]["rtos"]["footprint"]["ram"] == 4
+    assert data["variants"]["rtos"]["metrics"]["rg1kHz slips"] == 2
+    assert data["conditions"]["icount_shift"] == "4"

@@ -1,0 +1,35 @@
+import json
+
+import pytest
+
+from kittools import testing
+from kittools.workspace import KitError
+
+
+def test_twister_tally_counts_failures_errors_and_blocks(tmp_path):
+    report = tmp_path / "twister.json"
+    report.write_text(json.dumps({"testsuites": [
+        {"status": "passed"}, {"status": "passed"}, {"status": "failed"},
+        {"status": "error"}, {"status": "filtered"}, {"status": "skipped"}, {"status": "blocked"},
+    ]}))
+    tally = testing.twister_tally(report)
+    assert (tally.passed, tally.failed) == (2, 3)
+
+
+def test_missing_twister_report_is_an_error(tmp_path):
+    with pytest.raises(KitError, match="no report"):
+        testing.twister_tally(tmp_path / "twister.json")
+
+
+def test_gtest_tally(tmp_path):
+    report = tmp_path / "ut.json"
+    report.write_text(json.dumps({"tests": 12, "failures": 2, "errors": 0}))
+    tally = testing.gtest_tally(report)
+    assert (tally.passed, tally.failed) == (10, 2)
+
+
+def test_junit_tally_handles_testsuites_root(tmp_path):
+    report = tmp_path / "pytest.xml"
+    report.write_text('<testsuites><testsuite tests="5" failures="1" errors="1" skipped="1"/></testsuites>')
+    tally = testing.junit_tally(report)
+    assert (tally.passed, tally.failed) == (2, 2)

@@ -1,0 +1,45 @@
+import pytest
+
+from kittools import workspace
+from kittools.workspace import KitError
+
+
+def test_ported_board_is_accepted_with_or_without_qualifiers():
+    assert workspace.check_board("qemu_cortex_m3") == "qemu_cortex_m3"
+    assert workspace.check_board("qemu_cortex_m3/ti_lm3s6965") == "qemu_cortex_m3"
+
+
+def test_unknown_board_names_the_ported_ones_and_the_guide():
+    with pytest.raises(KitError) as error:
+        workspace.check_board("nucleo_f429zi")
+    message = str(error.value)
+    assert "nucleo_f429zi" in message and "qemu_cortex_m3" in message and "docs/porting.md" in message
+
+
+def test_unknown_variant_lists_the_variants():
+    with pytest.raises(KitError, match="baremetal, rtos"):
+        workspace.check_variant("freertos")
+
+
+def test_unprovisioned_workspace_says_to_run_setup(tmp_path, monkeypatch):
+    monkeypatch.setattr(workspace, "DEPS", tmp_path / "deps")
+    with pytest.raises(KitError, match="scripts/setup.sh"):
+        workspace.check_provisioned()
+
+
+def test_environment_defaults_to_gnuarmemb_unless_a_toolchain_is_chosen(monkeypatch):
+    monkeypatch.delenv("ZEPHYR_TOOLCHAIN_VARIANT", raising=False)
+    monkeypatch.delenv("ZEPHYR_SDK_INSTALL_DIR", raising=False)
+    env = workspace.environment()
+    assert env["ZEPHYR_TOOLCHAIN_VARIANT"] == "gnuarmemb"
+    monkeypatch.setenv("ZEPHYR_TOOLCHAIN_VARIANT", "zephyr")
+    assert workspace.environment()["ZEPHYR_TOOLCHAIN_VARIANT"] == "zephyr"
+
+
+def test_missing_toolchain_is_explained(monkeypatch):
+    monkeypatch.delenv("ZEPHYR_TOOLCHAIN_VARIANT", raising=False)
+    monkeypatch.delenv("ZEPHYR_SDK_INSTALL_DIR", raising=False)
+    monkeypatch.setenv("PATH", "/nonexistent")
+    monkeypatch.setattr(workspace.shutil, "which", lambda *a, **k: None)
+    with pytest.raises(KitError, match="gcc-arm-none-eabi"):
+        workspace.environment()
