@@ -4,6 +4,7 @@
 // ======================================================================
 #include "app/Top/KitTopology.hpp"
 #include "app/Top/GeneratedIds.hpp"
+#include "app/Components/Timing/TickClock.hpp"
 #include <Fw/Types/Assert.hpp>
 
 namespace Kit {
@@ -38,7 +39,7 @@ void configureTopology() {
         dividers.dividers[i] = {RATE_GROUPS[i].divisor, RATE_GROUPS[i].offset};
     }
     rateGroupDriver.configure(dividers);
-    timing.configure(RATE_GROUPS, RATE_GROUP_COUNT);
+    timing.configure(RATE_GROUPS, RATE_GROUP_COUNT, TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
 
     // Contexts are unused by the members; ActiveRateGroup wants one per port
     U32 contexts[Svc::ActiveRateGroup::CONNECTION_COUNT_MAX] = {};

@@ -39,21 +39,54 @@ const char* responseName(const Fw::CmdResponse& response) {
     }
 }
 
+void printHistogram(const char* rateGroup, const char* metric, const Histogram& histogram) {
+    // Non-empty buckets as lower_bound:count, in cycles
+    printk("KIT HIST rg=%s metric=%s buckets=", rateGroup, metric);
+    bool first = true;
+    for (U32 bucket = 0; bucket < Histogram::BUCKETS; bucket++) {
+        if (histogram.count(bucket) == 0) {
+            continue;
+        }
+        printk("%s%u:%u", first ? "" : ",", static_cast<unsigned>(Histogram::lowerBound(bucket)),
+               static_cast<unsigned>(histogram.count(bucket)));
+        first = false;
+    }
+    printk("\n");
+}
+
+void printStats(const char* name, const CycleStats& stats) {
+    printk(" %s_min=%u %s_p50=%u %s_p99=%u %s_max=%u", name, static_cast<unsigned>(stats.min()), name,
+           static_cast<unsigned>(stats.percentile(500)), name, static_cast<unsigned>(stats.percentile(990)), name,
+           static_cast<unsigned>(stats.max()));
+}
+
 bool rateGroups(U32 ticks) {
     bool passed = true;
+    const U32 runCycles = ticks * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         const RateGroupRecord& rg = timing.record(i);
         const U32 expected = expectedCycles(i, ticks);
-        const bool ok = (ticks == 0 || rg.cycles == expected) && rg.slips == 0 && !rg.running;
+        const bool ok = (ticks == 0 || rg.cycles == expected) && rg.slips == 0 && rg.lostStamps == 0 && !rg.running;
         passed = passed && ok;
-        printk("KIT RG name=%s hz=%u cycles=%u expected=%u slips=%u late_starts=%u "
-               "latency_min=%u latency_max=%u exec_min=%u exec_max=%u period_min=%u period_max=%u\n",
-               rg.spec.name, static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor),
-               static_cast<unsigned>(rg.cycles), static_cast<unsigned>(expected), static_cast<unsigned>(rg.slips),
-               static_cast<unsigned>(rg.lateStarts), static_cast<unsigned>(rg.latency.min()),
-               static_cast<unsigned>(rg.latency.max()), static_cast<unsigned>(rg.exec.min()),
-               static_cast<unsigned>(rg.exec.max()), static_cast<unsigned>(rg.period.min()),
-               static_cast<unsigned>(rg.period.max()));
+        printk("KIT RG name=%s hz=%u cycles=%u expected=%u slips=%u late_starts=%u lost_stamps=%u", rg.spec.name,
+               static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor), static_cast<unsigned>(rg.cycles),
+               static_cast<unsigned>(expected), static_cast<unsigned>(rg.slips), static_cast<unsigned>(rg.lateStarts),
+               static_cast<unsigned>(rg.lostStamps));
+        printStats("latency", rg.latency);
+        printStats("exec", rg.exec);
+        printStats("jitter", rg.periodError);
+        printk(" period_min=%u period_max=%u\n", static_cast<unsigned>(rg.periodMin),
+               static_cast<unsigned>(rg.periodMax));
+        // Betaflight-style task line: runs, average and worst execution, late
+        // starts, share of the CPU (per mille of the run)
+        const U32 cpuPermille = runCycles == 0 ? 0 : static_cast<U32>((rg.exec.sum() * 1000u) / runCycles);
+        printk("KIT TASK name=%s runs=%u exec_avg=%u exec_max=%u late=%u cpu_permille=%u\n", rg.spec.name,
+               static_cast<unsigned>(rg.cycles), static_cast<unsigned>(rg.exec.mean()),
+               static_cast<unsigned>(rg.exec.max()), static_cast<unsigned>(rg.lateStarts),
+               static_cast<unsigned>(cpuPermille));
+        printHistogram(rg.spec.name, "latency", rg.latency.histogram());
+        printHistogram(rg.spec.name, "exec", rg.exec.histogram());
+        printHistogram(rg.spec.name, "jitter", rg.periodError.histogram());
     }
     return passed;
 }
@@ -82,8 +115,11 @@ void banner(const char* variant) {
            static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
 }
 
-bool results(U32 ticks) {
+bool results(U32 ticks, U32 probeCost) {
     const bool rgOk = rateGroups(ticks);
+    printk("KIT HASH samples=%u fnv=0x%08x\n", static_cast<unsigned>(timing.sampleHash().samples()),
+           static_cast<unsigned>(timing.sampleHash().value()));
+    printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));
     const bool cmdOk = commands();
     const FwEventIdType noOpEvent = cmdDisp.getIdBase() + CmdDispIds::NO_OP_RECEIVED;
     printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u\n",

@@ -15,8 +15,9 @@ namespace Report {
 
 void banner(const char* variant);
 
-//! Print the results of a run of `ticks` ticks; true when every check passed
-bool results(U32 ticks);
+//! Print the results of a run of `ticks` ticks; true when every check passed.
+//! probeCost: the timing probe's cycles per rate-group cycle (start + end).
+bool results(U32 ticks, U32 probeCost);
 
 void end(const char* variant, bool passed);
 

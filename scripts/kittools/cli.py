@@ -52,6 +52,7 @@ def cmd_test(args: argparse.Namespace) -> int:
     steps = []
     if not args.skip_twister:
         steps.append(("twister suite under QEMU", lambda: testing.run_twister(args.board, log_dir)))
+        steps.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
     if not args.skip_host:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:

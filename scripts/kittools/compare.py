@@ -36,10 +36,12 @@ def metrics(data: VariantData) -> dict[str, float]:
     values["stacks used, peak (bytes)"] = sum(s.int("used") for s in stacks)
     for rg in run.of_kind("RG"):
         name = rg.fields["name"]
-        values[f"{name} latency max (us)"] = _us(rg.int("latency_max"), cycles_hz)
-        values[f"{name} exec max (us)"] = _us(rg.int("exec_max"), cycles_hz)
-        values[f"{name} period max (us)"] = _us(rg.int("period_max"), cycles_hz)
+        for metric, label in (("latency", "latency"), ("exec", "exec"), ("jitter", "period error")):
+            for stat in ("p50", "p99", "max"):
+                values[f"{name} {label} {stat} (us)"] = _us(rg.int(f"{metric}_{stat}"), cycles_hz)
         values[f"{name} slips"] = rg.int("slips")
+    for task in run.of_kind("TASK"):
+        values[f"{task.fields['name']} CPU share (%)"] = task.int("cpu_permille") / 10
     return values
 
 

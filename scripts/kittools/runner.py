@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import os
+import re
 import selectors
+import shlex
 import signal
 import subprocess
 import time
@@ -44,13 +46,30 @@ def build(variant: str, board: str, build_dir: Path, log: Path) -> None:
         raise KitError(f"build of {variant} failed ({' '.join(command)}); log {log}:\n{_tail(log.read_text())}")
 
 
+def qemu_command(build_dir: Path) -> list[str]:
+    """The QEMU command line the build's `run` target uses, with the console on
+    stdio. Twister builds send the console to a FIFO instead; the binary and
+    every other flag (machine, icount) stay exactly as built."""
+    ninja = build_dir / "build.ninja"
+    if not ninja.is_file():
+        raise KitError(f"{build_dir} is not a finished build (no build.ninja)")
+    for line in ninja.read_text().splitlines():
+        start = line.find("qemu-system-")
+        if start >= 0 and "-kernel" in line:
+            words = shlex.split(line[start:].split("&&")[0])
+            return [re.sub(r"^pipe,id=con,mux=on,path=\S+$", "stdio,id=con,mux=on", w) for w in words
+                    if w != "-pidfile" and not w.endswith("qemu.pid")]
+    raise KitError(f"no QEMU command in {ninja}: is this a QEMU board build?")
+
+
 def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S,
-        on_line: Callable[[str], None] | None = None) -> str:
-    """Run the build in QEMU (`west build -t run`) until the firmware's end
-    line or a fatal error, then stop QEMU. Returns the console text."""
-    command = ["west", "build", "-d", str(build_dir), "-t", "run"]
-    process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, start_new_session=True)
+        on_line: Callable[[str], None] | None = None, direct: bool = False) -> str:
+    """Run the build in QEMU until the firmware's end line or a fatal error,
+    then stop QEMU. Returns the console text. `direct` runs QEMU itself (see
+    qemu_command) instead of `west build -t run`."""
+    command = qemu_command(build_dir) if direct else ["west", "build", "-d", str(build_dir), "-t", "run"]
+    process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
     assert process.stdout is not None
     lines: list[str] = []
     finished = False

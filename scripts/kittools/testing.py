@@ -9,6 +9,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import console, runner
 from .workspace import KIT_ROOT, KitError, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
@@ -52,6 +53,38 @@ def run_twister(platform: str, log_dir: Path) -> Tally:
     tally = twister_tally(TWISTER_OUT / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)
+    return tally
+
+
+def recorded_hashes(report: Path) -> dict[str, str]:
+    """Scenario name -> the sample hash twister recorded (KIT HASH line)."""
+    hashes: dict[str, str] = {}
+    for suite in json.loads(report.read_text()).get("testsuites", []):
+        for record in suite.get("recording") or []:
+            if record.get("kind") == "HASH":
+                parsed = console.parse_line(f"KIT HASH {record.get('fields', '')}")
+                if parsed is not None and "fnv" in parsed.fields:
+                    hashes[suite["name"].rsplit("/", 1)[-1]] = parsed.fields["fnv"]
+    return hashes
+
+
+def check_determinism(log_dir: Path) -> Tally:
+    """Run each twister-built binary once more under QEMU, with twister's own
+    QEMU flags: under icount the raw timing samples, and so their hash, must
+    be identical to what twister recorded."""
+    tally = Tally()
+    for scenario, expected in sorted(recorded_hashes(TWISTER_OUT / "twister.json").items()):
+        builds = [p.parent.parent for p in TWISTER_OUT.glob(f"**/{scenario}/zephyr/zephyr.elf")]
+        if len(builds) != 1:
+            raise KitError(f"expected one twister build of {scenario}, found {len(builds)}")
+        text = runner.run(builds[0], log_dir / f"{scenario}.rerun.log", direct=True)
+        again = console.parse(text).one("HASH").fields.get("fnv")
+        same = again == expected
+        print(f"[kit]   {scenario}: sample hash {expected}, then {again}: {'identical' if same else 'DIFFERENT'}",
+              flush=True)
+        tally.add(Tally(passed=1) if same else Tally(failed=1))
+    if tally.passed + tally.failed == 0:
+        raise KitError("twister recorded no sample hash: nothing to compare")
     return tally
 
 

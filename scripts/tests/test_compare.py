@@ -10,7 +10,10 @@ def _data(variant: str, rom: int, ram: int, **kwargs) -> compare.VariantData:
 def test_metrics_convert_cycles_to_microseconds():
     values = compare.metrics(_data("baremetal", 1000, 500))
     assert values["rg1kHz latency max (us)"] == 100.0  # 1200 cycles at 12 MHz
+    assert values["rg1kHz latency p99 (us)"] == 1100 / 12
     assert values["rg1kHz exec max (us)"] == 200.0
+    assert values["rg1kHz period error p50 (us)"] == 1.0
+    assert values["rg1kHz CPU share (%)"] == 7.5
     assert values["stacks reserved (bytes)"] == 2048
     assert values["ROM (bytes)"] == 1000
 

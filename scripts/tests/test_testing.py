@@ -33,3 +33,13 @@ def test_junit_tally_handles_testsuites_root(tmp_path):
     report.write_text('<testsuites><testsuite tests="5" failures="1" errors="1" skipped="1"/></testsuites>')
     tally = testing.junit_tally(report)
     assert (tally.passed, tally.failed) == (2, 2)
+
+
+def test_recorded_hashes_reads_twister_recordings(tmp_path):
+    report = tmp_path / "twister.json"
+    report.write_text(json.dumps({"testsuites": [
+        {"name": "deployment/kit.deployment.rtos", "recording": [
+            {"kind": "RG", "fields": "name=rg1kHz"}, {"kind": "HASH", "fields": "samples=10 fnv=0xdeadbeef"}]},
+        {"name": "deployment/other", "recording": None},
+    ]}))
+    assert testing.recorded_hashes(report) == {"kit.deployment.rtos": "0xdeadbeef"}

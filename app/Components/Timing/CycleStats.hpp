@@ -18,7 +18,39 @@ inline U32 elapsedCycles(U32 from, U32 to) {
     return static_cast<U32>(to - from);
 }
 
-//! Count, min, max and sum of a metric.
+//! Fixed-bucket, log-linear histogram of cycle counts. Values below 16 have a
+//! bucket each; above, every power of two is split into 8 buckets, so a
+//! bucket is at most 12.5% wide relative to its values. Values from 245,760
+//! cycles (20.5 ms at 12 MHz) up share the last bucket. 512 bytes of RAM,
+//! whatever the run length: percentiles without storing samples.
+class Histogram {
+  public:
+    static constexpr U32 SUB_BITS = 3;
+    static constexpr U32 SUB = 1u << SUB_BITS;  //!< buckets per power of two
+    static constexpr U32 BUCKETS = 128;
+    static constexpr U32 LAST = BUCKETS - 1;  //!< also holds everything beyond its lower bound
+
+    //! Bucket of a value
+    static U32 bucketOf(U32 value);
+    //! Smallest value in bucket `bucket`
+    static U32 lowerBound(U32 bucket);
+    //! Largest value in bucket `bucket` (0xFFFFFFFF for the last)
+    static U32 upperBound(U32 bucket);
+
+    void add(U32 value);
+    void reset();
+    U32 total() const { return m_total; }
+    U32 count(U32 bucket) const;
+    //! Upper bound of the bucket holding the sample of rank ceil(permille/1000 * total);
+    //! 0 when empty. Never below the true percentile, at most one bucket above.
+    U32 percentileBound(U32 permille) const;
+
+  private:
+    U32 m_counts[BUCKETS] = {};
+    U32 m_total = 0;
+};
+
+//! Count, min, max, sum and distribution of a metric.
 class CycleStats {
   public:
     void add(U32 value);
@@ -28,12 +60,30 @@ class CycleStats {
     U32 max() const { return m_max; }
     //! Mean, rounded down; 0 when empty
     U32 mean() const;
+    U64 sum() const { return m_sum; }
+    //! Percentile from the histogram, clamped to the exact [min, max]
+    U32 percentile(U32 permille) const;
+    const Histogram& histogram() const { return m_histogram; }
 
   private:
     U32 m_count = 0;
     U32 m_min = 0xFFFFFFFFu;
     U32 m_max = 0;
     U64 m_sum = 0;
+    Histogram m_histogram;
+};
+
+//! FNV-1a over 32-bit samples, in recording order: two runs that recorded the
+//! same samples give the same hash.
+class SampleHash {
+  public:
+    void add(U32 sample);
+    U32 value() const { return m_hash; }
+    U32 samples() const { return m_samples; }
+
+  private:
+    U32 m_hash = 2166136261u;
+    U32 m_samples = 0;
 };
 
 //! True when a cycle released at tick `releaseTick` of a rate group with the

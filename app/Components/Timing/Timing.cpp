@@ -13,20 +13,38 @@
 namespace Kit {
 
 Timing::Timing(const char* const compName)
-    : TimingComponentBase(compName), m_records(), m_count(0), m_ticksDriven(0) {}
+    : TimingComponentBase(compName), m_records(), m_count(0), m_cyclesPerTick(0), m_ticksDriven(0) {}
 
 Timing::~Timing() {}
 
-void Timing::configure(const RateGroupSpec* specs, FwIndexType count) {
+void Timing::configure(const RateGroupSpec* specs, FwIndexType count, U32 cyclesPerTick) {
     FW_ASSERT(specs != nullptr);
     FW_ASSERT(count > 0 && count <= MAX_RATE_GROUPS, static_cast<FwAssertArgType>(count));
+    FW_ASSERT(cyclesPerTick > 0);
+    m_cyclesPerTick = cyclesPerTick;
     for (FwIndexType i = 0; i < count; i++) {
         FW_ASSERT(specs[i].divisor > 0, static_cast<FwAssertArgType>(i));
         FW_ASSERT(specs[i].offset < specs[i].divisor, static_cast<FwAssertArgType>(i));
-        m_records[i] = RateGroupRecord();
         m_records[i].spec = specs[i];
+        this->resetRecord(i);
     }
     m_count = count;
+}
+
+void Timing::resetRecord(FwIndexType rateGroup) {
+    RateGroupRecord& rg = m_records[rateGroup];
+    rg.nominalPeriod = rg.spec.divisor * m_cyclesPerTick;
+    rg.cycles = 0;
+    rg.slips = 0;
+    rg.lateStarts = 0;
+    rg.lostStamps = 0;
+    rg.latency.reset();
+    rg.exec.reset();
+    rg.periodError.reset();
+    rg.periodMin = 0xFFFFFFFFu;
+    rg.periodMax = 0;
+    rg.lastStart = 0;
+    rg.running = false;
 }
 
 void Timing::tick() {
@@ -54,17 +72,13 @@ U32 Timing::releaseTick(const RateGroupRecord& rg) const {
     return rg.spec.offset + rg.cycles * rg.spec.divisor;
 }
 
-void Timing::cycleStart_handler(FwIndexType portNum, U32 context) {
-    (void)context;
-    FW_ASSERT(portNum >= 0 && portNum < m_count, static_cast<FwAssertArgType>(portNum));
-    RateGroupRecord& rg = m_records[portNum];
-    FW_ASSERT(!rg.running, static_cast<FwAssertArgType>(portNum));  // start/end must pair up
-    const U32 now = TickClock::now();
+void Timing::recordStart(RateGroupRecord& rg, U32 now, U32 fired) {
+    FW_ASSERT(!rg.running);  // start and end must pair up
     const U32 release = this->releaseTick(rg);
-    const U32 fired = TickClock::ticksFired();
-
     if (static_cast<U32>(fired - release) <= TickClock::STAMP_HISTORY) {
-        rg.latency.add(elapsedCycles(TickClock::stampOf(release), now));
+        const U32 latency = elapsedCycles(TickClock::stampOf(release), now);
+        rg.latency.add(latency);
+        m_hash.add(latency);
     } else {
         rg.lostStamps++;
     }
@@ -72,30 +86,63 @@ void Timing::cycleStart_handler(FwIndexType portNum, U32 context) {
         rg.lateStarts++;
     }
     if (rg.cycles > 0) {
-        rg.period.add(elapsedCycles(rg.lastStart, now));
+        const U32 period = elapsedCycles(rg.lastStart, now);
+        rg.periodMin = period < rg.periodMin ? period : rg.periodMin;
+        rg.periodMax = period > rg.periodMax ? period : rg.periodMax;
+        rg.periodError.add(period > rg.nominalPeriod ? period - rg.nominalPeriod : rg.nominalPeriod - period);
+        m_hash.add(period);
     }
     rg.lastStart = now;
     rg.running = true;
+}
+
+U32 Timing::recordEnd(RateGroupRecord& rg, U32 now, U32 fired) {
+    FW_ASSERT(rg.running);
+    const U32 exec = elapsedCycles(rg.lastStart, now);
+    rg.exec.add(exec);
+    m_hash.add(exec);
+    rg.running = false;
+    const U32 late = ticksLate(fired, this->releaseTick(rg), rg.spec.divisor);
+    if (late > 0) {
+        rg.slips++;
+    }
+    rg.cycles++;
+    return late;
+}
+
+U32 Timing::measureProbeCost(U32 pairs) {
+    FW_ASSERT(pairs > 0 && m_count > 0);
+    FW_ASSERT(m_ticksDriven == 0);  // before the run: the scratch record must not disturb it
+    // Cycle 0 of the fastest group, released at tick 0 and never late, over
+    // and over; the record and the hash are then put back to their start state.
+    RateGroupRecord& rg = m_records[0];
+    const U32 begin = TickClock::now();
+    for (U32 i = 0; i < pairs; i++) {
+        rg.cycles = 0;
+        this->recordStart(rg, TickClock::now(), 1);
+        (void)this->recordEnd(rg, TickClock::now(), 1);
+    }
+    const U32 total = elapsedCycles(begin, TickClock::now());
+    this->resetRecord(0);
+    m_hash = SampleHash();
+    return total / pairs;
+}
+
+void Timing::cycleStart_handler(FwIndexType portNum, U32 context) {
+    (void)context;
+    FW_ASSERT(portNum >= 0 && portNum < m_count, static_cast<FwAssertArgType>(portNum));
+    this->recordStart(m_records[portNum], TickClock::now(), TickClock::ticksFired());
 }
 
 void Timing::cycleEnd_handler(FwIndexType portNum, U32 context) {
     (void)context;
     FW_ASSERT(portNum >= 0 && portNum < m_count, static_cast<FwAssertArgType>(portNum));
     RateGroupRecord& rg = m_records[portNum];
-    FW_ASSERT(rg.running, static_cast<FwAssertArgType>(portNum));
-    const U32 now = TickClock::now();
-    const U32 release = this->releaseTick(rg);
-    const U32 fired = TickClock::ticksFired();
-    rg.exec.add(elapsedCycles(rg.lastStart, now));
-    rg.running = false;
-
-    const U32 late = ticksLate(fired, release, rg.spec.divisor);
+    const U32 late = this->recordEnd(rg, TickClock::now(), TickClock::ticksFired());
     if (late > 0) {
-        rg.slips++;
-        this->log_WARNING_HI_RateGroupSlip(static_cast<U8>(portNum), rg.cycles, late);
+        this->log_WARNING_HI_RateGroupSlip(static_cast<U8>(portNum), rg.cycles - 1, late);
         this->tlmWrite_Slips(this->totalSlips());
     }
-    rg.cycles++;
     // Telemetry at 10 Hz of the fast group: enough for an operator, and it keeps
     // the probe's own cost out of the 1 kHz budget.
     if (portNum == 0 && (rg.cycles % TLM_DECIMATION) == 0) {

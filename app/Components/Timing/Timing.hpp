@@ -17,16 +17,19 @@ struct RateGroupSpec {
     U32 offset;   //!< tick of the first cycle
 };
 
-//! What the probe knows about one rate group
+//! What the probe knows about one rate group (cycle counts in counter cycles)
 struct RateGroupRecord {
     RateGroupSpec spec;
-    U32 cycles;         //!< cycles completed
-    U32 slips;          //!< cycles that ended past their deadline
-    U32 lateStarts;     //!< cycles that started after their deadline
-    U32 lostStamps;     //!< starts whose tick stamp had left the ring (counted as slips too)
-    CycleStats period;  //!< start to start
-    CycleStats latency; //!< tick ISR to cycle start
-    CycleStats exec;    //!< cycle start to end
+    U32 nominalPeriod;       //!< divisor x cycles per tick
+    U32 cycles;              //!< cycles completed
+    U32 slips;               //!< cycles that ended past their deadline
+    U32 lateStarts;          //!< cycles that started after their deadline
+    U32 lostStamps;          //!< starts whose tick stamp had left the ring
+    CycleStats latency;      //!< tick ISR to cycle start
+    CycleStats exec;         //!< cycle start to end
+    CycleStats periodError;  //!< |start to start - nominal period|
+    U32 periodMin;           //!< start to start, exact
+    U32 periodMax;
     U32 lastStart;
     bool running;
 };
@@ -38,8 +41,14 @@ class Timing final : public TimingComponentBase {
     explicit Timing(const char* const compName);
     ~Timing();
 
-    //! Must run before the first tick; specs must match the rate group driver's dividers
-    void configure(const RateGroupSpec* specs, FwIndexType count);
+    //! Must run before the first tick; specs must match the rate group driver's
+    //! dividers; cyclesPerTick is the counter's cycles per board tick
+    void configure(const RateGroupSpec* specs, FwIndexType count, U32 cyclesPerTick);
+
+    //! The probe's own cost: counter cycles of one start plus one end record
+    //! (port call overhead excluded), averaged over `pairs` runs on the fastest
+    //! group's record, which is reset afterwards. Call before the first tick.
+    U32 measureProbeCost(U32 pairs);
 
     //! Called by the variant's main loop once per board tick, in tick order
     void tick();
@@ -49,6 +58,8 @@ class Timing final : public TimingComponentBase {
     //! Ticks handed to the rate group driver
     U32 ticksDriven() const { return m_ticksDriven; }
     U32 totalSlips() const;
+    //! Hash of every latency, execution and period sample, in recording order
+    const SampleHash& sampleHash() const { return m_hash; }
 
   private:
     void cycleStart_handler(FwIndexType portNum, U32 context) override;
@@ -57,10 +68,17 @@ class Timing final : public TimingComponentBase {
     static constexpr U32 TLM_DECIMATION = 100;
 
     U32 releaseTick(const RateGroupRecord& rg) const;
+    //! Back to the configured, empty state, in place (a record is ~1.6 KiB: no temporaries)
+    void resetRecord(FwIndexType rateGroup);
+    //! The probe's work at a cycle's start, and at its end (returns ticks late)
+    void recordStart(RateGroupRecord& rg, U32 now, U32 fired);
+    U32 recordEnd(RateGroupRecord& rg, U32 now, U32 fired);
 
     RateGroupRecord m_records[MAX_RATE_GROUPS];
     FwIndexType m_count;
+    U32 m_cyclesPerTick;
     U32 m_ticksDriven;
+    SampleHash m_hash;
     Os::RawTime m_rawTime;
 };
 

@@ -67,4 +67,70 @@ TEST(Deadline, AcrossTheTickCounterWrap) {
     EXPECT_EQ(Kit::ticksLate(1u, release, 1u), 2u);
 }
 
+TEST(Histogram, SmallValuesHaveABucketEach) {
+    for (U32 v = 0; v < 16; v++) {
+        EXPECT_EQ(Kit::Histogram::bucketOf(v), v);
+        EXPECT_EQ(Kit::Histogram::lowerBound(v), v);
+        EXPECT_EQ(Kit::Histogram::upperBound(v), v);
+    }
+}
+
+TEST(Histogram, BucketsTileTheRangeWithoutGapsOrOverlap) {
+    for (U32 b = 0; b + 1 < Kit::Histogram::BUCKETS; b++) {
+        EXPECT_EQ(Kit::Histogram::upperBound(b) + 1, Kit::Histogram::lowerBound(b + 1)) << "bucket " << b;
+        EXPECT_EQ(Kit::Histogram::bucketOf(Kit::Histogram::lowerBound(b)), b);
+        EXPECT_EQ(Kit::Histogram::bucketOf(Kit::Histogram::upperBound(b)), b);
+    }
+}
+
+TEST(Histogram, BucketWidthIsAtMostAnEighthOfItsValues) {
+    for (U32 b = 16; b + 1 < Kit::Histogram::BUCKETS; b++) {
+        const U32 width = Kit::Histogram::upperBound(b) - Kit::Histogram::lowerBound(b) + 1;
+        EXPECT_LE(width * 8, Kit::Histogram::lowerBound(b)) << "bucket " << b;
+    }
+}
+
+TEST(Histogram, HugeValuesLandInTheLastBucket) {
+    const U32 last = Kit::Histogram::LAST;  // a copy: gtest takes its arguments by reference
+    EXPECT_EQ(Kit::Histogram::bucketOf(0xFFFFFFFFu), last);
+    EXPECT_EQ(Kit::Histogram::bucketOf(Kit::Histogram::lowerBound(last)), last);
+}
+
+TEST(Histogram, PercentileUsesTheRankOfTheSample) {
+    Kit::Histogram histogram;
+    for (U32 v = 1; v <= 10; v++) {  // exact buckets: percentiles are exact
+        histogram.add(v);
+    }
+    EXPECT_EQ(histogram.percentileBound(500), 5u);   // rank 5 of 10
+    EXPECT_EQ(histogram.percentileBound(990), 10u);  // rank ceil(9.9) = 10
+    EXPECT_EQ(histogram.percentileBound(0), 1u);     // rank at least 1
+    EXPECT_EQ(histogram.percentileBound(1000), 10u);
+}
+
+TEST(Histogram, EmptyPercentileIsZero) {
+    EXPECT_EQ(Kit::Histogram().percentileBound(500), 0u);
+}
+
+TEST(CycleStats, PercentileIsClampedToTheExactExtremes) {
+    Kit::CycleStats stats;
+    for (U32 i = 0; i < 99; i++) {
+        stats.add(1000);
+    }
+    stats.add(1001);
+    // 1000 and 1001 share a bucket [960, 1023]: the bound is clamped to the max
+    EXPECT_EQ(stats.percentile(500), 1001u);
+    EXPECT_EQ(stats.percentile(990), 1001u);
+    EXPECT_GE(stats.percentile(500), 1000u);  // never below the true value
+}
+
+TEST(SampleHash, OrderMatters) {
+    Kit::SampleHash a, b;
+    a.add(1);
+    a.add(2);
+    b.add(2);
+    b.add(1);
+    EXPECT_NE(a.value(), b.value());
+    EXPECT_EQ(a.samples(), 2u);
+}
+
 }  // namespace

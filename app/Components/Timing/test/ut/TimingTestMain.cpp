@@ -20,6 +20,16 @@ TEST(Timing, LatencyAcrossTheCounterWrap) {
     tester.latencyAcrossTheCounterWrap();
 }
 
+TEST(Timing, SameSamplesSameHash) {
+    Kit::TimingTester tester;
+    tester.sameSamplesSameHash();
+}
+
+TEST(Timing, ProbeCostLeavesTheRunUntouched) {
+    Kit::TimingTester tester;
+    tester.probeCostLeavesTheRunUntouched();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -13,7 +13,7 @@ TimingTester::TimingTester()
     this->initComponents();
     this->connectPorts();
     FakeTickClock::reset();
-    component.configure(SPECS, 3);
+    component.configure(SPECS, 3, PERIOD);
 }
 
 TimingTester::~TimingTester() {}
@@ -50,7 +50,8 @@ void TimingTester::onTimeCyclesRecordLatencyAndExecution() {
     EXPECT_EQ(rg.latency.min(), 500u);
     EXPECT_EQ(rg.latency.max(), 700u);
     EXPECT_EQ(rg.exec.max(), 300u);
-    EXPECT_EQ(rg.period.max(), PERIOD + 200u);  // start to start
+    EXPECT_EQ(rg.periodMax, PERIOD + 200u);  // start to start
+    EXPECT_EQ(rg.periodError.max(), 200u);    // against the nominal 1 ms
     ASSERT_EVENTS_SIZE(0);
 }
 
@@ -76,6 +77,31 @@ void TimingTester::latencyAcrossTheCounterWrap() {
     EXPECT_EQ(component.record(0).latency.max(), 0x200u);
     EXPECT_EQ(component.record(0).exec.max(), 0x80u);
     EXPECT_EQ(component.record(0).slips, 0u);
+}
+
+void TimingTester::sameSamplesSameHash() {
+    runFastCycle(0, 500, 100, 1);
+    runFastCycle(1, 700, 300, 2);
+    const SampleHash first = component.sampleHash();
+    EXPECT_EQ(first.samples(), 5u);  // 2 latencies, 2 executions, 1 period
+
+    TimingTester again;
+    again.runFastCycle(0, 500, 100, 1);
+    again.runFastCycle(1, 700, 300, 2);
+    EXPECT_EQ(again.component.sampleHash().value(), first.value());
+
+    TimingTester other;
+    other.runFastCycle(0, 500, 100, 1);
+    other.runFastCycle(1, 701, 300, 2);  // one cycle later
+    EXPECT_NE(other.component.sampleHash().value(), first.value());
+}
+
+void TimingTester::probeCostLeavesTheRunUntouched() {
+    (void)component.measureProbeCost(8);
+    EXPECT_EQ(component.record(0).cycles, 0u);
+    EXPECT_EQ(component.sampleHash().samples(), 0u);
+    runFastCycle(0, 500, 100, 1);
+    EXPECT_EQ(component.record(0).cycles, 1u);
 }
 
 }  // namespace Kit

@@ -18,6 +18,8 @@ class TimingTester : public TimingGTestBase {
     void onTimeCyclesRecordLatencyAndExecution();
     void lateEndIsASlipWithEvent();
     void latencyAcrossTheCounterWrap();
+    void sameSamplesSameHash();
+    void probeCostLeavesTheRunUntouched();
 
   private:
     void from_CycleOut_handler(FwIndexType portNum, Os::RawTime& cycleStart) override;
