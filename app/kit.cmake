@@ -163,6 +163,7 @@ register_fprime_zephyr_deployment(kit_${KIT_VARIANT}
         "${KIT_ROOT}/app/src/main.cpp"
         "${KIT_ROOT}/app/src/Report.cpp"
         "${KIT_ROOT}/app/src/TickClock.cpp"
+        "${KIT_ROOT}/app/src/CountingAllocator.cpp"
         ${KIT_VARIANT_SOURCES}
     DEPENDS
         app_Top

@@ -8,8 +8,8 @@
 // ======================================================================
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/src/Variant.hpp"
+#include "app/Top/KitTopology.hpp"
 
-#include <zephyr/debug/thread_analyzer.h>
 #include <zephyr/kernel.h>
 #include <zephyr/sys/printk.h>
 
@@ -21,9 +21,23 @@ K_SEM_DEFINE(s_tickSem, 0, 1);
 // After the last tick: long enough for the slowest thread to empty its queue
 constexpr U32 DRAIN_MS = 50;
 
-void printStack(struct thread_analyzer_info* info) {
-    printk("KIT STACK name=%s size=%u used=%u\n", info->name, static_cast<unsigned>(info->stack_size),
-           static_cast<unsigned>(info->stack_used));
+// F´ names its threads "ActComp_<n>" when object names are compiled out; a
+// thread's entry argument is F´'s task wrapper, a member of the component
+// object, so the instance holding it names the thread.
+void printStack(const struct k_thread* thread, void* context) {
+    (void)context;
+    struct k_thread* const mutableThread = const_cast<struct k_thread*>(thread);
+    const char* name = Kit::activeInstanceHolding(thread->entry.parameter1);
+    if (name == nullptr) {
+        name = k_thread_name_get(mutableThread);
+    }
+    size_t unused = 0;
+    const size_t size = thread->stack_info.size;
+    if (k_thread_stack_space_get(thread, &unused) != 0) {
+        unused = size;  // not measurable: reported as unused, never as fitting
+    }
+    printk("KIT STACK name=%s size=%u used=%u\n", name != nullptr ? name : "?", static_cast<unsigned>(size),
+           static_cast<unsigned>(size - unused));
 }
 }  // namespace
 
@@ -50,11 +64,11 @@ void drain() {
 }
 
 void prepareStacks() {
-    // CONFIG_THREAD_ANALYZER paints every thread stack at creation
+    // CONFIG_INIT_STACKS paints every thread stack at creation
 }
 
 void reportStacks() {
-    thread_analyzer_run(printStack, 0);
+    k_thread_foreach(printStack, nullptr);
 }
 
 }  // namespace Variant

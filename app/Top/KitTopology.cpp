@@ -17,6 +17,23 @@ const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
     {"rg10Hz", 100, 2},
 };
 
+const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
+    {"rg1kHz", &rg1kHz, sizeof(rg1kHz)},     {"rg100Hz", &rg100Hz, sizeof(rg100Hz)},
+    {"rg10Hz", &rg10Hz, sizeof(rg10Hz)},     {"cmdDisp", &cmdDisp, sizeof(cmdDisp)},
+    {"events", &events, sizeof(events)},     {"tlmSend", &tlmSend, sizeof(tlmSend)},
+};
+
+const char* activeInstanceHolding(const void* address) {
+    const U8* const byte = static_cast<const U8*>(address);
+    for (const ActiveInstance& instance : ACTIVE_INSTANCES) {
+        const U8* const start = static_cast<const U8*>(instance.object);
+        if (byte >= start && byte < start + instance.size) {
+            return instance.name;
+        }
+    }
+    return nullptr;
+}
+
 namespace {
 
 // The uplink script: at 10 Hz cycle 2 a NO_OP, then the controller's setpoint

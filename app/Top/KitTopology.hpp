@@ -13,6 +13,18 @@ namespace Kit {
 constexpr FwIndexType RATE_GROUP_COUNT = 3;
 extern const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT];
 
+//! An active component instance, for reports that must name its task
+struct ActiveInstance {
+    const char* name;
+    const void* object;  //!< the instance; its task's entry argument lies inside it
+    FwSizeType size;
+};
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 6;
+extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
+
+//! Name of the active instance whose object holds `address`, or nullptr
+const char* activeInstanceHolding(const void* address);
+
 //! Instantiate, wire, configure and start the deployment (tasks included)
 void setupTopology(const TopologyState& state);
 

@@ -115,8 +115,13 @@ void banner(const char* variant) {
            static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
 }
 
-bool results(U32 ticks, U32 probeCost) {
+bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap) {
     const bool rgOk = rateGroups(ticks);
+    const bool heapOk = heap.allocationsAfterInit() == 0 && heap.failures() == 0;
+    printk("KIT HEAP peak=%u current=%u allocations=%u after_init=%u failures=%u arena=%u\n",
+           static_cast<unsigned>(heap.peakBytes()), static_cast<unsigned>(heap.currentBytes()),
+           static_cast<unsigned>(heap.allocations()), static_cast<unsigned>(heap.allocationsAfterInit()),
+           static_cast<unsigned>(heap.failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
     printk("KIT HASH samples=%u fnv=0x%08x\n", static_cast<unsigned>(timing.sampleHash().samples()),
            static_cast<unsigned>(timing.sampleHash().value()));
     printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));
@@ -127,7 +132,7 @@ bool results(U32 ticks, U32 probeCost) {
            static_cast<unsigned>(downlink.malformedPackets()), static_cast<unsigned>(downlink.eventCount(noOpEvent)));
     printk("KIT TICKS driven=%u fired=%u\n", static_cast<unsigned>(timing.ticksDriven()),
            static_cast<unsigned>(TickClock::ticksFired()));
-    return rgOk && cmdOk;
+    return rgOk && cmdOk && heapOk;
 }
 
 void end(const char* variant, bool passed) {

@@ -9,6 +9,7 @@
 #define KIT_REPORT_HPP
 
 #include <Fw/FPrimeBasicTypes.hpp>
+#include "app/src/CountingAllocator.hpp"
 
 namespace Kit {
 namespace Report {
@@ -16,8 +17,9 @@ namespace Report {
 void banner(const char* variant);
 
 //! Print the results of a run of `ticks` ticks; true when every check passed.
-//! probeCost: the timing probe's cycles per rate-group cycle (start + end).
-bool results(U32 ticks, U32 probeCost);
+//! probeCost: the timing probe's cycles per rate-group cycle (start + end);
+//! heap: F´'s allocator, whose use is reported.
+bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap);
 
 void end(const char* variant, bool passed);
 

@@ -10,6 +10,7 @@
 
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
+#include "app/src/CountingAllocator.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/TickControl.hpp"
 #include "app/src/Variant.hpp"
@@ -19,6 +20,8 @@
 namespace {
 
 constexpr U32 PROBE_CALIBRATION_PAIRS = 64;
+
+Kit::CountingAllocator s_allocator;
 
 void runTicks(U32 ticks) {
     const U32 periodUs = 1000000u / CONFIG_KIT_TICK_HZ;
@@ -47,12 +50,14 @@ int main() {
     Kit::Report::banner(Kit::Variant::name());
     Kit::Variant::prepareStacks();
     Os::init();
+    s_allocator.registerForFprime();
     Kit::TopologyState state;
     Kit::setupTopology(state);
+    s_allocator.endInitialization();
     // The probe's own cost, measured before the run so it does not disturb it
     const U32 probeCost = Kit::timing.measureProbeCost(PROBE_CALIBRATION_PAIRS);
     runTicks(CONFIG_KIT_RUN_TICKS);
-    const bool passed = Kit::Report::results(CONFIG_KIT_RUN_TICKS, probeCost);
+    const bool passed = Kit::Report::results(CONFIG_KIT_RUN_TICKS, probeCost, s_allocator);
     Kit::Variant::reportStacks();
     Kit::Report::end(Kit::Variant::name(), passed);
     return 0;

@@ -11,7 +11,7 @@ import json
 import sys
 from pathlib import Path
 
-from . import compare, runner, testing
+from . import compare, conditions, modules, runner, testing
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
 
 DEFAULT_BOARD = "qemu_cortex_m3"
@@ -33,7 +33,11 @@ def cmd_compare(args: argparse.Namespace) -> int:
         fp = result.footprint
         _say(f"{variant}: ran to its end line: {'PASS' if result.run.passed else 'FAIL'}; "
              f"ROM {fp.rom} B, RAM {fp.ram} B")
-        results.append(compare.VariantData(variant, result.footprint, result.run))
+        _say(f"{variant}: ROM/RAM by module (west build -t rom_report / ram_report)")
+        rom = modules.breakdown(modules.report(result.build_dir, "rom"))
+        ram = modules.breakdown(modules.report(result.build_dir, "ram"))
+        results.append(compare.VariantData(variant, result.footprint, result.run, rom, ram,
+                                           conditions.read(result.build_dir)))
     table = compare.markdown(results[0], results[1])
     (out_dir / "comparison.md").write_text(table + "\n")
     (out_dir / "comparison.json").write_text(json.dumps(compare.as_json(results), indent=2) + "\n")

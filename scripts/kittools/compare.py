@@ -3,7 +3,7 @@ reviewer pastes) and the same numbers as JSON."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from .console import Run
@@ -17,6 +17,9 @@ class VariantData:
     variant: str
     footprint: Footprint
     run: Run
+    rom_modules: dict[str, int] = field(default_factory=dict)
+    ram_modules: dict[str, int] = field(default_factory=dict)
+    build: dict[str, object] = field(default_factory=dict)  # conditions.read()
 
 
 def _us(cycles: int, cycles_hz: int) -> float:
@@ -31,6 +34,8 @@ def metrics(data: VariantData) -> dict[str, float]:
         "ROM (bytes)": data.footprint.rom,
         "RAM, static (bytes)": data.footprint.ram,
     }
+    if run.of_kind("HEAP"):
+        values["F´ heap peak (bytes)"] = run.one("HEAP").int("peak")
     stacks = run.of_kind("STACK")
     values["stacks reserved (bytes)"] = sum(s.int("size") for s in stacks)
     values["stacks used, peak (bytes)"] = sum(s.int("used") for s in stacks)
@@ -71,17 +76,44 @@ def markdown(left: VariantData, right: VariantData) -> str:
     for name in a:
         if name in b:
             lines.append(f"| {name} | {_fmt(a[name])} | {_fmt(b[name])} | {_fmt(b[name] - a[name])} |")
+    if left.rom_modules and right.rom_modules:
+        lines += ["", "ROM and RAM by module (bytes; Zephyr rom_report / ram_report, sorted into layers):", "",
+                  f"| module | ROM {left.variant} | ROM {right.variant} | RAM {left.variant} | RAM {right.variant} |",
+                  "|---|---:|---:|---:|---:|"]
+        for name in left.rom_modules:
+            lines.append(f"| {name} | {_fmt(left.rom_modules[name])} | {_fmt(right.rom_modules.get(name, 0))} | "
+                         f"{_fmt(left.ram_modules.get(name, 0))} | {_fmt(right.ram_modules.get(name, 0))} |")
+        lines.append(f"| total | {_fmt(sum(left.rom_modules.values()))} | {_fmt(sum(right.rom_modules.values()))} | "
+                     f"{_fmt(sum(left.ram_modules.values()))} | {_fmt(sum(right.ram_modules.values()))} |")
+    tasks = [(d.variant, t) for d in (left, right) for t in d.run.of_kind("TASK")]
+    if tasks:
+        lines += ["", "Rate groups as tasks (counter cycles):", "",
+                  "| variant | task | runs | exec avg | exec max | late | CPU % |", "|---|---|---:|---:|---:|---:|---:|"]
+        for variant, t in tasks:
+            lines.append(f"| {variant} | {t.fields['name']} | {t.fields['runs']} | {t.fields['exec_avg']} | "
+                         f"{t.fields['exec_max']} | {t.fields['late']} | {t.int('cpu_permille') / 10:.1f} |")
+    probes = [f"{d.variant} {d.run.one('PROBE').fields.get('cycles_per_cycle')}" for d in (left, right)
+              if d.run.of_kind("PROBE")]
+    if probes:
+        lines += ["", f"Instrumentation cost (counter cycles per rate-group cycle): {', '.join(probes)}."]
     verdicts = ", ".join(f"{d.variant} {'PASS' if d.run.passed else 'FAIL'}" for d in (left, right))
     lines += ["", f"Run verdicts: {verdicts}."]
     return "\n".join(lines)
 
 
+SCHEMA_VERSION = 1
+
+
 def as_json(results: list[VariantData]) -> dict[str, Any]:
+    """The results file; its schema is documented in docs/results.md."""
     return {
+        "schema_version": SCHEMA_VERSION,
         "conditions": conditions(results[0]),
         "variants": {
             d.variant: {
                 "passed": d.run.passed,
+                "build": d.build,
+                "modules": {"rom": d.rom_modules, "ram": d.ram_modules},
                 "footprint": {"rom": d.footprint.rom, "ram": d.footprint.ram,
                               "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size},
                 "metrics": metrics(d),

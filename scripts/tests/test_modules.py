@@ -1,0 +1,38 @@
+from kittools import modules
+
+
+def _tree():
+    return {"total_size": 100, "symbols": {"name": "Root", "children": [
+        {"name": "ZEPHYR_BASE", "children": [{"name": "kernel", "children": [
+            {"name": "sched.c", "identifier": "kernel/sched.c/z_thread_halt", "size": 10}]}]},
+        {"name": "OUTPUT_DIR", "children": [
+            {"name": "x", "identifier": "F-Prime/Svc/CmdDispatcher/CommandDispatcherComponentAc.cpp/f", "size": 20},
+            {"name": "y", "identifier": "F-Prime/Fw/Types/SerializableAc.cpp/g", "size": 5},
+            {"name": "z", "identifier": "app/Components/Timing/TimingComponentAc.cpp/h", "size": 7}]},
+        {"name": "WORKSPACE", "children": [
+            {"name": "a", "identifier": "deps/fprime-baremetal/fprime-baremetal/Os/TaskRunner/TaskRunner.cpp/r", "size": 3},
+            {"name": "b", "identifier": "rtos/Os/PriorityTask.cpp/s", "size": 2},
+            {"name": "c", "identifier": "newlib/libc/tinystdio/vfprintf.c/vfprintf", "size": 30}]},
+        {"name": "/", "children": [
+            {"name": "d", "identifier": "/src/libstdc++-v3/libsupc++/eh_throw.cc", "size": 8},
+            {"name": "e", "identifier": "/libgcc/libgcc2.c/__udivmoddi4", "size": 4}]},
+        {"name": "(no paths)", "children": [
+            {"name": "f", "identifier": ":/_GLOBAL__sub_I__ZN3Kit7cmdDispE", "size": 6},
+            {"name": "g", "identifier": ":/CSWTCH.16", "size": 5}]},
+    ]}}
+
+
+def test_every_layer_is_recognised():
+    sizes = modules.breakdown(_tree())
+    assert sizes["Zephyr kernel, arch, drivers"] == 10
+    assert sizes["F´ services"] == 20
+    assert sizes["F´ framework"] == 5
+    assert sizes["kit deployment and components"] == 7 + 6  # path, then namespace of a path-less symbol
+    assert sizes["OS layer (fprime-baremetal / fprime-zephyr / kit)"] == 5
+    assert sizes["libc (picolibc, libgcc)"] == 34
+    assert sizes["libstdc++"] == 8
+    assert sizes["unattributed"] == 5
+
+
+def test_breakdown_accounts_for_every_byte():
+    assert sum(modules.breakdown(_tree()).values()) == 100
