@@ -9,6 +9,8 @@
 // ======================================================================
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/src/Variant.hpp"
+#include "app/Top/KitTopology.hpp"
+#include "baremetal/Os/TimedTask.hpp"
 
 #include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
 #include <zephyr/kernel.h>
@@ -28,6 +30,15 @@ constexpr U32 DRAIN_PASSES = 32;
 constexpr U32 PAINT = 0xCAFEF00Du;
 constexpr U32 PAINT_GUARD_BYTES = 128;  // below the current frame, left alone
 
+// Cycles the main loop spent asleep waiting for a tick, and how often
+U64 s_idleCycles = 0;
+U32 s_idleWaits = 0;
+U32 s_idleMax = 0;
+
+U32 permille(U64 part, U32 whole) {
+    return whole == 0 ? 0 : static_cast<U32>((part * 1000u) / whole);
+}
+
 U32* stackBottom() {
     return reinterpret_cast<U32*>(K_KERNEL_STACK_BUFFER(z_main_stack));
 }
@@ -40,6 +51,7 @@ const char* name() {
 void onTickIsr() {}
 
 void waitForTick(U32 handled) {
+    const U32 begin = TickClock::now();
     // Check and sleep atomically, so a tick between the check and the WFI
     // cannot be slept through.
     unsigned int key = irq_lock();
@@ -48,6 +60,10 @@ void waitForTick(U32 handled) {
         key = irq_lock();
     }
     irq_unlock(key);
+    const U32 slept = TickClock::now() - begin;
+    s_idleCycles += slept;
+    s_idleWaits++;
+    s_idleMax = slept > s_idleMax ? slept : s_idleMax;
 }
 
 void afterTick() {
@@ -77,6 +93,20 @@ void reportStacks() {
     }
     const U32 untouched = static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
     printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(size), static_cast<unsigned>(size - untouched));
+}
+
+void reportCpu(U32 runCycles) {
+    for (FwSizeType i = 0; i < TimedTask::taskCount(); i++) {
+        const SliceRecord& task = TimedTask::record(i);
+        const char* const name = activeInstanceHolding(task.argument);
+        printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", name != nullptr ? name : "?",
+               static_cast<unsigned>(task.slices),
+               static_cast<unsigned>(task.slices == 0 ? 0 : task.cycles / task.slices),
+               static_cast<unsigned>(task.maxCycles), static_cast<unsigned>(permille(task.cycles, runCycles)));
+    }
+    printk("KIT CPU name=idle runs=%u avg=%u max=%u cpu_permille=%u\n", static_cast<unsigned>(s_idleWaits),
+           static_cast<unsigned>(s_idleWaits == 0 ? 0 : s_idleCycles / s_idleWaits), static_cast<unsigned>(s_idleMax),
+           static_cast<unsigned>(permille(s_idleCycles, runCycles)));
 }
 
 }  // namespace Variant

@@ -14,10 +14,11 @@ foreach(KIT_PATCH IN LISTS KIT_BAREMETAL_PATCHES)
 endforeach()
 
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/config")
+add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/Os")
 
 set(KIT_VARIANT_SOURCES "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp")
 set(KIT_VARIANT_IMPLEMENTATIONS
-    Os_Task_Baremetal    # cooperative tasks, run by Os::Baremetal::TaskRunner
+    Kit_Os_Task_BaremetalTimed  # fprime-baremetal's cooperative task, slices timed (baremetal/Os)
     Os_Mutex_Stub        # one context: nothing to exclude (also the condition variable)
     Os_Cpu_Baremetal
     Os_Memory_Baremetal

@@ -39,6 +39,24 @@ void printStack(const struct k_thread* thread, void* context) {
     printk("KIT STACK name=%s size=%u used=%u\n", name != nullptr ? name : "?", static_cast<unsigned>(size),
            static_cast<unsigned>(size - unused));
 }
+void printCpu(const struct k_thread* thread, void* context) {
+    const U32 runCycles = *static_cast<const U32*>(context);
+    struct k_thread* const mutableThread = const_cast<struct k_thread*>(thread);
+    const char* name = Kit::activeInstanceHolding(thread->entry.parameter1);
+    if (name == nullptr) {
+        name = k_thread_name_get(mutableThread);
+    }
+    k_thread_runtime_stats_t stats = {};
+    if (k_thread_runtime_stats_get(mutableThread, &stats) != 0) {
+        return;
+    }
+    // A run is a scheduling window: from being switched in to switched out
+    const U64 runs = stats.average_cycles == 0 ? 0 : stats.total_cycles / stats.average_cycles;
+    const U32 share = runCycles == 0 ? 0 : static_cast<U32>((stats.total_cycles * 1000u) / runCycles);
+    printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", name != nullptr ? name : "?",
+           static_cast<unsigned>(runs), static_cast<unsigned>(stats.average_cycles),
+           static_cast<unsigned>(stats.peak_cycles), static_cast<unsigned>(share));
+}
 }  // namespace
 
 const char* name() {
@@ -69,6 +87,11 @@ void prepareStacks() {
 
 void reportStacks() {
     k_thread_foreach(printStack, nullptr);
+}
+
+void reportCpu(U32 runCycles) {
+    // Counted from boot: the run plus start-up, which is short next to it
+    k_thread_foreach(printCpu, &runCycles);
 }
 
 }  // namespace Variant

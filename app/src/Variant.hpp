@@ -34,6 +34,11 @@ void prepareStacks();
 //! Print a "KIT STACK" line per stack with its size and high-water mark
 void reportStacks();
 
+//! Print a "KIT CPU" line per execution context (thread, or cooperative
+//! task, and idle): runs, average and worst cycles per run, share of the
+//! `runCycles` the run lasted
+void reportCpu(U32 runCycles);
+
 }  // namespace Variant
 }  // namespace Kit
 

@@ -56,9 +56,12 @@ int main() {
     s_allocator.endInitialization();
     // The probe's own cost, measured before the run so it does not disturb it
     const U32 probeCost = Kit::timing.measureProbeCost(PROBE_CALIBRATION_PAIRS);
+    const U32 runStart = Kit::TickClock::now();
     runTicks(CONFIG_KIT_RUN_TICKS);
+    const U32 runCycles = Kit::TickClock::now() - runStart;
     const bool passed = Kit::Report::results(CONFIG_KIT_RUN_TICKS, probeCost, s_allocator);
     Kit::Variant::reportStacks();
+    Kit::Variant::reportCpu(runCycles);
     Kit::Report::end(Kit::Variant::name(), passed);
     return 0;
 }

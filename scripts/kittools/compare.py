@@ -92,6 +92,13 @@ def markdown(left: VariantData, right: VariantData) -> str:
         for variant, t in tasks:
             lines.append(f"| {variant} | {t.fields['name']} | {t.fields['runs']} | {t.fields['exec_avg']} | "
                          f"{t.fields['exec_max']} | {t.fields['late']} | {t.int('cpu_permille') / 10:.1f} |")
+    cpus = [(d.variant, c) for d in (left, right) for c in d.run.of_kind("CPU")]
+    if cpus:
+        lines += ["", "CPU by execution context (threads on rtos, TaskRunner slices on baremetal; counter cycles):", "",
+                  "| variant | context | runs | avg | max | CPU % |", "|---|---|---:|---:|---:|---:|"]
+        for variant, c in cpus:
+            lines.append(f"| {variant} | {c.fields['name']} | {c.fields['runs']} | {c.fields['avg']} | "
+                         f"{c.fields['max']} | {c.int('cpu_permille') / 10:.1f} |")
     probes = [f"{d.variant} {d.run.one('PROBE').fields.get('cycles_per_cycle')}" for d in (left, right)
               if d.run.of_kind("PROBE")]
     if probes:

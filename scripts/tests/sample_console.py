@@ -14,5 +14,6 @@ def console_log(variant: str = "baremetal", slips: int = 0, result: str = "PASS"
         "KIT HASH samples=5999 fnv=0x1234abcd",
         "KIT CMD frame=0 opcode=0x500 noop=yes response=OK",
         f"KIT STACK name=main size=2048 used={stack_used}",
+        "KIT CPU name=idle runs=2000 avg=10069 max=11589 cpu_permille=837",
         f"KIT END variant={variant} result={result} uptime_ms=2005",
     ])

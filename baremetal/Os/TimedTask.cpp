@@ -1,0 +1,55 @@
+// ======================================================================
+// \title  TimedTask.cpp
+// ======================================================================
+#include "baremetal/Os/TimedTask.hpp"
+
+#include <Fw/Types/Assert.hpp>
+#include <Os/Delegate.hpp>
+#include <zephyr/kernel.h>
+
+namespace Kit {
+
+namespace {
+SliceRecord s_records[TimedTask::MAX_TASKS];
+FwSizeType s_count = 0;
+
+void timedSlice(void* argument) {
+    SliceRecord& record = *static_cast<SliceRecord*>(argument);
+    const U32 begin = k_cycle_get_32();
+    record.routine(record.argument);
+    const U32 cycles = k_cycle_get_32() - begin;  // modulo 2^32: one wrap is fine
+    record.slices++;
+    record.cycles += cycles;
+    record.maxCycles = cycles > record.maxCycles ? cycles : record.maxCycles;
+}
+}  // namespace
+
+Os::TaskInterface::Status TimedTask::start(const Arguments& arguments) {
+    FW_ASSERT(s_count < MAX_TASKS, static_cast<FwAssertArgType>(s_count));  // raise MAX_TASKS with the topology
+    SliceRecord& record = s_records[s_count];
+    record = {arguments.m_routine, arguments.m_routine_argument, 0, 0, 0};
+    s_count++;
+    Arguments timed(arguments);
+    timed.m_routine = timedSlice;
+    timed.m_routine_argument = &record;
+    return BaremetalTask::start(timed);
+}
+
+FwSizeType TimedTask::taskCount() {
+    return s_count;
+}
+
+const SliceRecord& TimedTask::record(FwSizeType index) {
+    FW_ASSERT(index < s_count, static_cast<FwAssertArgType>(index));
+    return s_records[index];
+}
+
+}  // namespace Kit
+
+namespace Os {
+
+TaskInterface* TaskInterface::getDelegate(TaskHandleStorage& aligned_new_memory) {
+    return Os::Delegate::makeDelegate<TaskInterface, Kit::TimedTask>(aligned_new_memory);
+}
+
+}  // namespace Os

@@ -1,0 +1,37 @@
+// ======================================================================
+// \title  TimedTask.hpp
+// \brief  fprime-baremetal's cooperative task, each slice timed
+//
+// The TaskRunner calls a task's routine once per slice; this task hands it a
+// trampoline instead, which times the routine with the cycle counter. What a
+// thread-level CPU table is on the RTOS variant, this is on baremetal.
+// ======================================================================
+#ifndef KIT_TIMEDTASK_HPP
+#define KIT_TIMEDTASK_HPP
+
+#include "fprime-baremetal/Os/Baremetal/Task.hpp"
+
+namespace Kit {
+
+//! What one cooperative task's slices cost
+struct SliceRecord {
+    Os::TaskInterface::taskRoutine routine;
+    void* argument;  //!< the routine's own argument (F´'s task wrapper, inside the component)
+    U32 slices;
+    U64 cycles;
+    U32 maxCycles;
+};
+
+class TimedTask final : public Os::Baremetal::BaremetalTask {
+  public:
+    static constexpr FwSizeType MAX_TASKS = 8;
+
+    Status start(const Arguments& arguments) override;
+
+    static FwSizeType taskCount();
+    static const SliceRecord& record(FwSizeType index);
+};
+
+}  // namespace Kit
+
+#endif
