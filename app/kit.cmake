@@ -164,6 +164,7 @@ register_fprime_zephyr_deployment(kit_${KIT_VARIANT}
         "${KIT_ROOT}/app/src/Report.cpp"
         "${KIT_ROOT}/app/src/TickClock.cpp"
         "${KIT_ROOT}/app/src/CountingAllocator.cpp"
+        "${KIT_ROOT}/app/src/HeapMonitor.cpp"
         ${KIT_VARIANT_SOURCES}
     DEPENDS
         app_Top
@@ -173,6 +174,10 @@ register_fprime_zephyr_deployment(kit_${KIT_VARIANT}
         ${KIT_VARIANT_IMPLEMENTATIONS}
 )
 target_include_directories(app PRIVATE "${KIT_ROOT}")
+# Every C heap allocation goes through app/src/HeapMonitor.cpp
+foreach(KIT_HEAP_FUNCTION IN ITEMS malloc calloc realloc aligned_alloc memalign free)
+    zephyr_ld_options("-Wl,--wrap=${KIT_HEAP_FUNCTION}")
+endforeach()
 
 # Provenance for the boot banner
 function(kit_git_sha OUT DIR)

@@ -23,15 +23,13 @@ void* CountingAllocator::allocate(const FwEnumStoreType identifier,
     recoverable = false;
     U8* const block = static_cast<U8*>(std::malloc(size + HEADER));
     if (block == nullptr) {
-        m_failures++;
-        size = 0;
+        size = 0;  // HeapMonitor counts the failure
         return nullptr;
     }
     *reinterpret_cast<FwSizeType*>(block) = size;
     m_current += size;
     m_peak = m_current > m_peak ? m_current : m_peak;
     m_allocations++;
-    m_afterInit += m_initialized ? 1u : 0u;
     return block + HEADER;
 }
 

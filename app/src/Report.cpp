@@ -6,6 +6,7 @@
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 #include "app/Top/KitTopology.hpp"
+#include "app/src/HeapMonitor.hpp"
 
 #include <zephyr/kernel.h>
 #include <zephyr/sys/printk.h>
@@ -117,11 +118,13 @@ void banner(const char* variant) {
 
 bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap) {
     const bool rgOk = rateGroups(ticks);
-    const bool heapOk = heap.allocationsAfterInit() == 0 && heap.failures() == 0;
-    printk("KIT HEAP peak=%u current=%u allocations=%u after_init=%u failures=%u arena=%u\n",
-           static_cast<unsigned>(heap.peakBytes()), static_cast<unsigned>(heap.currentBytes()),
-           static_cast<unsigned>(heap.allocations()), static_cast<unsigned>(heap.allocationsAfterInit()),
-           static_cast<unsigned>(heap.failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
+    const bool heapOk = HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
+    printk("KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
+           "failures=%u arena=%u\n",
+           static_cast<unsigned>(heap.peakBytes()), static_cast<unsigned>(heap.allocations()),
+           static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
+           static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
+           static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
     printk("KIT HASH samples=%u fnv=0x%08x\n", static_cast<unsigned>(timing.sampleHash().samples()),
            static_cast<unsigned>(timing.sampleHash().value()));
     printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));

@@ -11,6 +11,7 @@
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "app/src/CountingAllocator.hpp"
+#include "app/src/HeapMonitor.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/TickControl.hpp"
 #include "app/src/Variant.hpp"
@@ -53,7 +54,7 @@ int main() {
     s_allocator.registerForFprime();
     Kit::TopologyState state;
     Kit::setupTopology(state);
-    s_allocator.endInitialization();
+    Kit::HeapMonitor::markInitialized();
     // The probe's own cost, measured before the run so it does not disturb it
     const U32 probeCost = Kit::timing.measureProbeCost(PROBE_CALIBRATION_PAIRS);
     const U32 runStart = Kit::TickClock::now();

@@ -35,7 +35,9 @@ def metrics(data: VariantData) -> dict[str, float]:
         "RAM, static (bytes)": data.footprint.ram,
     }
     if run.of_kind("HEAP"):
-        values["F´ heap peak (bytes)"] = run.one("HEAP").int("peak")
+        heap = run.one("HEAP")
+        values["heap, F´ allocator peak (bytes)"] = heap.int("fprime_peak")
+        values["heap, all users (bytes requested)"] = heap.int("bytes")
     stacks = run.of_kind("STACK")
     values["stacks reserved (bytes)"] = sum(s.int("size") for s in stacks)
     values["stacks used, peak (bytes)"] = sum(s.int("used") for s in stacks)

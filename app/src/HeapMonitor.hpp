@@ -1,0 +1,34 @@
+// ======================================================================
+// \title  HeapMonitor.hpp
+// \brief  Every use of the C heap (the malloc arena), whoever the caller
+//
+// The link wraps the C allocation functions (-Wl,--wrap=..., app/kit.cmake),
+// so F´'s allocator, libstdc++ and Zephyr's libc users are all counted. The
+// kit frees nothing after start-up, so with frees() == 0 the bytes requested
+// are the heap's peak use (chunk headers not included).
+// ======================================================================
+#ifndef KIT_HEAPMONITOR_HPP
+#define KIT_HEAPMONITOR_HPP
+
+#include <Fw/FPrimeBasicTypes.hpp>
+#include <cstddef>
+
+namespace Kit {
+namespace HeapMonitor {
+
+U32 bytesRequested();
+U32 allocations();
+U32 frees();
+U32 failures();
+//! Allocations made after markInitialized(): the kit requires none
+U32 allocationsAfterInit();
+void markInitialized();
+
+//! For the link-time wrappers only
+void* counted(void* block, size_t size);
+void countFree(void* block);
+
+}  // namespace HeapMonitor
+}  // namespace Kit
+
+#endif
