@@ -7,14 +7,14 @@
 // the rate group driver, then gives every task one slice, highest priority
 // first. Rate groups never run inside the ISR.
 // ======================================================================
-#include "app/Components/Timing/TickClock.hpp"
 #include "app/src/Variant.hpp"
+#include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "baremetal/Os/TimedTask.hpp"
 
-#include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
 #include <zephyr/kernel.h>
 #include <zephyr/sys/printk.h>
+#include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
 
 K_KERNEL_STACK_DECLARE(z_main_stack, CONFIG_MAIN_STACK_SIZE);
 
@@ -91,8 +91,10 @@ void reportStacks() {
     while (word < top && *word == PAINT) {
         word++;
     }
-    const U32 untouched = static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
-    printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(size), static_cast<unsigned>(size - untouched));
+    const U32 untouched =
+        static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
+    printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(size),
+           static_cast<unsigned>(size - untouched));
 }
 
 void reportCpu(U32 runCycles) {

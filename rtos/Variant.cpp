@@ -6,8 +6,8 @@
 // semaphore; it hands the tick to the rate group driver, whose rate groups are
 // threads that preempt everything less urgent. Nothing else to do per tick.
 // ======================================================================
-#include "app/Components/Timing/TickClock.hpp"
 #include "app/src/Variant.hpp"
+#include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
 
 #include <zephyr/kernel.h>

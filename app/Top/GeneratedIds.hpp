@@ -9,8 +9,8 @@
 #ifndef KIT_GENERATEDIDS_HPP
 #define KIT_GENERATEDIDS_HPP
 
-#include "app/Components/Controller/ControllerComponentAc.hpp"
 #include "Svc/CmdDispatcher/CommandDispatcherComponentAc.hpp"
+#include "app/Components/Controller/ControllerComponentAc.hpp"
 
 namespace Kit {
 

@@ -3,9 +3,9 @@
 // \brief  Set up and tear down the kit's deployment (shared by both variants)
 // ======================================================================
 #include "app/Top/KitTopology.hpp"
-#include "app/Top/GeneratedIds.hpp"
-#include "app/Components/Timing/TickClock.hpp"
 #include <Fw/Types/Assert.hpp>
+#include "app/Components/Timing/TickClock.hpp"
+#include "app/Top/GeneratedIds.hpp"
 
 namespace Kit {
 
@@ -18,9 +18,9 @@ const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
 };
 
 const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
-    {"rg1kHz", &rg1kHz, sizeof(rg1kHz)},     {"rg100Hz", &rg100Hz, sizeof(rg100Hz)},
-    {"rg10Hz", &rg10Hz, sizeof(rg10Hz)},     {"cmdDisp", &cmdDisp, sizeof(cmdDisp)},
-    {"events", &events, sizeof(events)},     {"tlmSend", &tlmSend, sizeof(tlmSend)},
+    {"rg1kHz", &rg1kHz, sizeof(rg1kHz)}, {"rg100Hz", &rg100Hz, sizeof(rg100Hz)},
+    {"rg10Hz", &rg10Hz, sizeof(rg10Hz)}, {"cmdDisp", &cmdDisp, sizeof(cmdDisp)},
+    {"events", &events, sizeof(events)}, {"tlmSend", &tlmSend, sizeof(tlmSend)},
 };
 
 const char* activeInstanceHolding(const void* address) {

@@ -108,23 +108,25 @@ bool commands() {
 }  // namespace
 
 void banner(const char* variant) {
-    printk("KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "
-           "cycles_hz=%u icount_shift=%u run_ticks=%u\n",
-           variant, CONFIG_BOARD, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
-           static_cast<unsigned>(CONFIG_KIT_TICK_HZ), static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC),
-           static_cast<unsigned>(TickClock::cyclesPerSecond()), static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT),
-           static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
+    printk(
+        "KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "
+        "cycles_hz=%u icount_shift=%u run_ticks=%u\n",
+        variant, CONFIG_BOARD, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
+        static_cast<unsigned>(CONFIG_KIT_TICK_HZ), static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC),
+        static_cast<unsigned>(TickClock::cyclesPerSecond()), static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT),
+        static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
 }
 
 bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap) {
     const bool rgOk = rateGroups(ticks);
     const bool heapOk = HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
-    printk("KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
-           "failures=%u arena=%u\n",
-           static_cast<unsigned>(heap.peakBytes()), static_cast<unsigned>(heap.allocations()),
-           static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
-           static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
-           static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
+    printk(
+        "KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
+        "failures=%u arena=%u\n",
+        static_cast<unsigned>(heap.peakBytes()), static_cast<unsigned>(heap.allocations()),
+        static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
+        static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
+        static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
     printk("KIT HASH samples=%u fnv=0x%08x\n", static_cast<unsigned>(timing.sampleHash().samples()),
            static_cast<unsigned>(timing.sampleHash().value()));
     printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));

@@ -3,9 +3,9 @@
 // ======================================================================
 #include "baremetal/Os/TimedTask.hpp"
 
+#include <zephyr/kernel.h>
 #include <Fw/Types/Assert.hpp>
 #include <Os/Delegate.hpp>
-#include <zephyr/kernel.h>
 
 namespace Kit {
 

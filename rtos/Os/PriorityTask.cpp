@@ -5,9 +5,9 @@
 #include "rtos/Os/PriorityTask.hpp"
 #include "rtos/Os/PriorityMap.hpp"
 
+#include <zephyr/kernel.h>
 #include <Fw/Types/Assert.hpp>
 #include <Os/Delegate.hpp>
-#include <zephyr/kernel.h>
 
 namespace Kit {
 

@@ -56,6 +56,16 @@ def _fmt(value: float) -> str:
     return f"{value:,.0f}" if float(value).is_integer() else f"{value:,.1f}"
 
 
+def _table(title: str, columns: list[str], rows: list[list[Any]]) -> list[str]:
+    """A titled Markdown table (nothing when there are no rows); numbers right-aligned."""
+    if not rows:
+        return []
+    cells = [[_fmt(v) if isinstance(v, (int, float)) else str(v) for v in row] for row in rows]
+    align = ["---" if isinstance(v, str) else "---:" for v in rows[0]]
+    return ["", title, "", "| " + " | ".join(columns) + " |", "| " + " | ".join(align) + " |"] + [
+        "| " + " | ".join(row) + " |" for row in cells]
+
+
 def conditions(data: VariantData) -> dict[str, str]:
     banner = data.run.one("BANNER").fields
     keys = ("board", "kit", "zephyr", "fprime", "tick_hz", "sys_tick_hz", "cycles_hz", "icount_shift", "run_ticks")
@@ -79,28 +89,21 @@ def markdown(left: VariantData, right: VariantData) -> str:
         if name in b:
             lines.append(f"| {name} | {_fmt(a[name])} | {_fmt(b[name])} | {_fmt(b[name] - a[name])} |")
     if left.rom_modules and right.rom_modules:
-        lines += ["", "ROM and RAM by module (bytes; Zephyr rom_report / ram_report, sorted into layers):", "",
-                  f"| module | ROM {left.variant} | ROM {right.variant} | RAM {left.variant} | RAM {right.variant} |",
-                  "|---|---:|---:|---:|---:|"]
-        for name in left.rom_modules:
-            lines.append(f"| {name} | {_fmt(left.rom_modules[name])} | {_fmt(right.rom_modules.get(name, 0))} | "
-                         f"{_fmt(left.ram_modules.get(name, 0))} | {_fmt(right.ram_modules.get(name, 0))} |")
-        lines.append(f"| total | {_fmt(sum(left.rom_modules.values()))} | {_fmt(sum(right.rom_modules.values()))} | "
-                     f"{_fmt(sum(left.ram_modules.values()))} | {_fmt(sum(right.ram_modules.values()))} |")
-    tasks = [(d.variant, t) for d in (left, right) for t in d.run.of_kind("TASK")]
-    if tasks:
-        lines += ["", "Rate groups as tasks (counter cycles):", "",
-                  "| variant | task | runs | exec avg | exec max | late | CPU % |", "|---|---|---:|---:|---:|---:|---:|"]
-        for variant, t in tasks:
-            lines.append(f"| {variant} | {t.fields['name']} | {t.fields['runs']} | {t.fields['exec_avg']} | "
-                         f"{t.fields['exec_max']} | {t.fields['late']} | {t.int('cpu_permille') / 10:.1f} |")
-    cpus = [(d.variant, c) for d in (left, right) for c in d.run.of_kind("CPU")]
-    if cpus:
-        lines += ["", "CPU by execution context (threads on rtos, TaskRunner slices on baremetal; counter cycles):", "",
-                  "| variant | context | runs | avg | max | CPU % |", "|---|---|---:|---:|---:|---:|"]
-        for variant, c in cpus:
-            lines.append(f"| {variant} | {c.fields['name']} | {c.fields['runs']} | {c.fields['avg']} | "
-                         f"{c.fields['max']} | {c.int('cpu_permille') / 10:.1f} |")
+        rows = [[name, left.rom_modules[name], right.rom_modules.get(name, 0), left.ram_modules.get(name, 0),
+                 right.ram_modules.get(name, 0)] for name in left.rom_modules]
+        rows.append(["total"] + [sum(m.values()) for m in (left.rom_modules, right.rom_modules,
+                                                           left.ram_modules, right.ram_modules)])
+        lines += _table("ROM and RAM by module (bytes; Zephyr rom_report / ram_report, sorted into layers):",
+                        ["module", f"ROM {left.variant}", f"ROM {right.variant}", f"RAM {left.variant}",
+                         f"RAM {right.variant}"], rows)
+    lines += _table("Rate groups as tasks (counter cycles):",
+                    ["variant", "task", "runs", "exec avg", "exec max", "late", "CPU %"],
+                    [[d.variant, t.fields["name"], t.int("runs"), t.int("exec_avg"), t.int("exec_max"), t.int("late"),
+                      t.int("cpu_permille") / 10] for d in (left, right) for t in d.run.of_kind("TASK")])
+    lines += _table("CPU by execution context (threads on rtos, TaskRunner slices on baremetal; counter cycles):",
+                    ["variant", "context", "runs", "avg", "max", "CPU %"],
+                    [[d.variant, c.fields["name"], c.int("runs"), c.int("avg"), c.int("max"),
+                      c.int("cpu_permille") / 10] for d in (left, right) for c in d.run.of_kind("CPU")])
     probes = [f"{d.variant} {d.run.one('PROBE').fields.get('cycles_per_cycle')}" for d in (left, right)
               if d.run.of_kind("PROBE")]
     if probes:

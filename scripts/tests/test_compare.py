@@ -25,7 +25,7 @@ def test_markdown_puts_conditions_first_and_shows_deltas():
     assert "| ROM (bytes) | 90,000 | 100,000 | 10,000 |" in table
     assert "| stacks used, peak (bytes) | 1,000 | 1,500 | 500 |" in table
     assert "Run verdicts: baremetal PASS, rtos PASS." in table
-    assert "| rtos | idle | 2000 | 10069 | 11589 | 83.7 |" in table
+    assert "| rtos | idle | 2,000 | 10,069 | 11,589 | 83.7 |" in table
 
 
 def test_json_carries_records_and_footprints():

@@ -10,11 +10,11 @@
 namespace Kit {
 
 namespace {
-constexpr I32 NOISE = 64;          // sensor noise amplitude, counts
-constexpr I32 PLANT_SHIFT = 5;     // plant time constant: 32 steps
-constexpr I32 FILTER_SHIFT = 3;    // filter time constant: 8 steps
-constexpr I32 KP_SHIFT = 1;        // proportional gain 1/2
-constexpr I32 KI_SHIFT = 6;        // integral gain 1/64
+constexpr I32 NOISE = 64;        // sensor noise amplitude, counts
+constexpr I32 PLANT_SHIFT = 5;   // plant time constant: 32 steps
+constexpr I32 FILTER_SHIFT = 3;  // filter time constant: 8 steps
+constexpr I32 KP_SHIFT = 1;      // proportional gain 1/2
+constexpr I32 KI_SHIFT = 6;      // integral gain 1/64
 constexpr I32 INTEGRAL_LIMIT = 1 << 20;
 
 I32 clamp(I32 value, I32 limit) {

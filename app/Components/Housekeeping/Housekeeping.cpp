@@ -11,7 +11,13 @@ constexpr U32 CRC_INIT = 0xFFFFFFFFu;
 }
 
 Housekeeping::Housekeeping(const char* const compName)
-    : HousekeepingComponentBase(compName), m_table(), m_golden(0), m_running(CRC_INIT), m_offset(0), m_passes(0), m_cycles(0) {
+    : HousekeepingComponentBase(compName),
+      m_table(),
+      m_golden(0),
+      m_running(CRC_INIT),
+      m_offset(0),
+      m_passes(0),
+      m_cycles(0) {
     // A deterministic "configuration" pattern; its CRC is the reference
     for (FwSizeType i = 0; i < TABLE_SIZE; i++) {
         m_table[i] = static_cast<U8>((i * 31u + 7u) & 0xFFu);

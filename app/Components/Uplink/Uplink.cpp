@@ -68,7 +68,10 @@ void Uplink::schedIn_handler(FwIndexType portNum, U32 context) {
     m_cycle++;
 }
 
-void Uplink::cmdResponseIn_handler(FwIndexType portNum, FwOpcodeType opCode, U32 cmdSeq, const Fw::CmdResponse& response) {
+void Uplink::cmdResponseIn_handler(FwIndexType portNum,
+                                   FwOpcodeType opCode,
+                                   U32 cmdSeq,
+                                   const Fw::CmdResponse& response) {
     (void)portNum;
     FW_ASSERT(cmdSeq < m_count, static_cast<FwAssertArgType>(cmdSeq));
     FrameResult& result = m_results[cmdSeq];

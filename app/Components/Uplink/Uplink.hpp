@@ -43,7 +43,10 @@ class Uplink final : public UplinkComponentBase {
 
   private:
     void schedIn_handler(FwIndexType portNum, U32 context) override;
-    void cmdResponseIn_handler(FwIndexType portNum, FwOpcodeType opCode, U32 cmdSeq, const Fw::CmdResponse& response) override;
+    void cmdResponseIn_handler(FwIndexType portNum,
+                               FwOpcodeType opCode,
+                               U32 cmdSeq,
+                               const Fw::CmdResponse& response) override;
 
     const Frame* m_frames;
     FwSizeType m_count;

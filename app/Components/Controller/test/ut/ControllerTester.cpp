@@ -2,7 +2,8 @@
 
 namespace Kit {
 
-ControllerTester::ControllerTester() : ControllerGTestBase("ControllerTester", MAX_HISTORY_SIZE), component("Controller") {
+ControllerTester::ControllerTester()
+    : ControllerGTestBase("ControllerTester", MAX_HISTORY_SIZE), component("Controller") {
     this->initComponents();
     this->connectPorts();
 }

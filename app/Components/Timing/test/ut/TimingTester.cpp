@@ -8,8 +8,7 @@ constexpr U32 PERIOD = 12000;  // 1 kHz at 12 MHz
 const RateGroupSpec SPECS[3] = {{"rg1kHz", 1, 0}, {"rg100Hz", 10, 1}, {"rg10Hz", 100, 2}};
 }  // namespace
 
-TimingTester::TimingTester()
-    : TimingGTestBase("TimingTester", MAX_HISTORY_SIZE), component("Timing"), m_cycleOuts(0) {
+TimingTester::TimingTester() : TimingGTestBase("TimingTester", MAX_HISTORY_SIZE), component("Timing"), m_cycleOuts(0) {
     this->initComponents();
     this->connectPorts();
     FakeTickClock::reset();
@@ -51,7 +50,7 @@ void TimingTester::onTimeCyclesRecordLatencyAndExecution() {
     EXPECT_EQ(rg.latency.max(), 700u);
     EXPECT_EQ(rg.exec.max(), 300u);
     EXPECT_EQ(rg.periodMax, PERIOD + 200u);  // start to start
-    EXPECT_EQ(rg.periodError.max(), 200u);    // against the nominal 1 ms
+    EXPECT_EQ(rg.periodError.max(), 200u);   // against the nominal 1 ms
     ASSERT_EVENTS_SIZE(0);
 }
 
