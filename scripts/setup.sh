@@ -13,7 +13,7 @@ die() { printf '[setup] ERROR: %s\n' "$*" >&2; exit 1; }
 
 DEBIAN_PACKAGES=(gcc-arm-none-eabi picolibc-arm-none-eabi libstdc++-arm-none-eabi-picolibc
   qemu-system-arm device-tree-compiler ninja-build gperf ccache googletest
-  python3-venv git file g++ make)
+  python3-venv git file g++ make chromium)
 
 install_debian_packages() {
   local missing=()

@@ -1,7 +1,8 @@
 """kit: the kit's command line (also `west kit`).
 
-  kit compare   build both variants, run them under QEMU, print the comparison
-  kit test      twister suite under QEMU, host unit tests, tooling tests
+  kit compare   build both variants, run them under QEMU, write the comparison and its report
+  kit report    turn a results file into report.md / .html / .json / .csv (optionally against a baseline)
+  kit test      twister suite under QEMU, determinism, budget, host unit tests, tooling tests
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ import json
 import sys
 from pathlib import Path
 
-from . import compare, conditions, modules, runner, testing
+from . import compare, conditions, modules, report, results, runner, testing
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
 
 DEFAULT_BOARD = "qemu_cortex_m3"
@@ -26,7 +27,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
     check_provisioned()
     out_dir = Path(args.output).resolve()
     out_dir.mkdir(parents=True, exist_ok=True)
-    results = []
+    found = []
     for variant in VARIANTS:
         _say(f"{variant}: building for {args.board} (west build -T app/kit.{variant})")
         result = runner.build_and_run(variant, args.board, out_dir)
@@ -36,16 +37,37 @@ def cmd_compare(args: argparse.Namespace) -> int:
         _say(f"{variant}: ROM/RAM by module (west build -t rom_report / ram_report)")
         rom = modules.breakdown(modules.report(result.build_dir, "rom"))
         ram = modules.breakdown(modules.report(result.build_dir, "ram"))
-        results.append(compare.VariantData(variant, result.footprint, result.run, rom, ram,
-                                           conditions.read(result.build_dir)))
-    table = compare.markdown(results[0], results[1])
-    (out_dir / "comparison.md").write_text(table + "\n")
-    (out_dir / "comparison.json").write_text(json.dumps(compare.as_json(results), indent=2) + "\n")
+        found.append(compare.VariantData(variant, result.footprint, result.run, rom, ram,
+                                         conditions.read(result.build_dir)))
+    results_file = out_dir / "comparison.json"
+    results_file.write_text(json.dumps(compare.as_json(found), indent=2) + "\n")
+    outcome = report.write_from_file(results_file, out_dir, None, report.Budget(), _say)
     print()
-    print(table)
-    print()
-    _say(f"written: {out_dir / 'comparison.md'}, {out_dir / 'comparison.json'}")
-    return 0 if all(r.run.passed for r in results) else 1
+    print((out_dir / "report.md").read_text())
+    _say(f"results: {results_file}")
+    _say(f"report: {', '.join(str(f) for f in outcome.files[:4])}")
+    return 0 if all(r.run.passed for r in found) else 1
+
+
+def _budget(args: argparse.Namespace) -> report.Budget:
+    return report.Budget(rom_pct=args.rom_budget, ram_pct=args.ram_budget, p99_pct=args.p99_budget)
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    source = Path(args.results).resolve()
+    out_dir = Path(args.output).resolve() if args.output else source.parent
+    baseline = Path(args.baseline).resolve() if args.baseline else None
+    outcome = report.write_from_file(source, out_dir, baseline, _budget(args), _say)
+    for path in outcome.files[:4]:
+        _say(f"written: {path}")
+    if baseline is not None:
+        if outcome.violations:
+            for violation in outcome.violations:
+                _say(f"budget: {violation}")
+            _say(f"budget check against {baseline}: FAIL")
+            return 1
+        _say(f"budget check against {baseline}: PASS")
+    return 0
 
 
 def cmd_test(args: argparse.Namespace) -> int:
@@ -57,6 +79,8 @@ def cmd_test(args: argparse.Namespace) -> int:
     if not args.skip_twister:
         steps.append(("twister suite under QEMU", lambda: testing.run_twister(args.board, log_dir)))
         steps.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
+        steps.append(("budget: twister's results against the baseline",
+                      lambda: testing.check_budget(args.board, log_dir, _budget(args), args.update_baseline)))
     if not args.skip_host:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:
@@ -77,13 +101,25 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--board", default=DEFAULT_BOARD)
     p.add_argument("--output", default=str(KIT_ROOT / "build" / "compare"), help="build folders, logs, results")
     p.set_defaults(func=cmd_compare)
+    r = sub.add_parser("report", help="report of a results file (build/compare/comparison.json)")
+    r.add_argument("results", help="results file (JSON, docs/results.md)")
+    r.add_argument("--baseline", help="results file to diff against; with it, a budget check sets the exit code")
+    r.add_argument("--output", help="folder for report.* (default: the results file's folder)")
+    r.set_defaults(func=cmd_report)
     t = sub.add_parser("test", help="twister suite, host unit tests and tooling tests")
     t.add_argument("--board", default=DEFAULT_BOARD)
     t.add_argument("--output", default=str(KIT_ROOT / "build" / "test-logs"), help="logs and reports")
     t.add_argument("--skip-twister", action="store_true")
     t.add_argument("--skip-host", action="store_true")
     t.add_argument("--skip-python", action="store_true")
+    t.add_argument("--update-baseline", action="store_true",
+                   help="make this run's results tests/baselines/<board>.json (review and commit the change)")
     t.set_defaults(func=cmd_test)
+    for command in (r, t):
+        command.add_argument("--rom-budget", type=float, default=report.Budget.rom_pct, help="allowed ROM growth, %%")
+        command.add_argument("--ram-budget", type=float, default=report.Budget.ram_pct, help="allowed RAM growth, %%")
+        command.add_argument("--p99-budget", type=float, default=report.Budget.p99_pct,
+                             help="allowed p99 growth, %% (changes under 2 us never count)")
     return top
 
 

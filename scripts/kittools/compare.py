@@ -1,5 +1,5 @@
-"""Side-by-side comparison of the variants' runs: a Markdown table (what a
-reviewer pastes) and the same numbers as JSON."""
+"""The variants' runs as comparable numbers (metrics) and as the results file
+(as_json, docs/results.md); kittools.report renders them."""
 
 from __future__ import annotations
 
@@ -52,65 +52,10 @@ def metrics(data: VariantData) -> dict[str, float]:
     return values
 
 
-def _fmt(value: float) -> str:
-    return f"{value:,.0f}" if float(value).is_integer() else f"{value:,.1f}"
-
-
-def _table(title: str, columns: list[str], rows: list[list[Any]]) -> list[str]:
-    """A titled Markdown table (nothing when there are no rows); numbers right-aligned."""
-    if not rows:
-        return []
-    cells = [[_fmt(v) if isinstance(v, (int, float)) else str(v) for v in row] for row in rows]
-    align = ["---" if isinstance(v, str) else "---:" for v in rows[0]]
-    return ["", title, "", "| " + " | ".join(columns) + " |", "| " + " | ".join(align) + " |"] + [
-        "| " + " | ".join(row) + " |" for row in cells]
-
-
 def conditions(data: VariantData) -> dict[str, str]:
     banner = data.run.one("BANNER").fields
     keys = ("board", "kit", "zephyr", "fprime", "tick_hz", "sys_tick_hz", "cycles_hz", "icount_shift", "run_ticks")
     return {k: banner[k] for k in keys if k in banner}
-
-
-def markdown(left: VariantData, right: VariantData) -> str:
-    """The comparison table, conditions first."""
-    cond = conditions(left)
-    a, b = metrics(left), metrics(right)
-    lines = [
-        f"Conditions: board {cond.get('board')}, kit {cond.get('kit')}, Zephyr {cond.get('zephyr')}, "
-        f"F´ {cond.get('fprime')}, tick {cond.get('tick_hz')} Hz, counter {cond.get('cycles_hz')} Hz, "
-        f"QEMU icount shift {cond.get('icount_shift')}, {cond.get('run_ticks')} ticks. "
-        "Times are QEMU virtual time: they compare software paths, not hardware latency.",
-        "",
-        f"| metric | {left.variant} | {right.variant} | {right.variant} − {left.variant} |",
-        "|---|---:|---:|---:|",
-    ]
-    for name in a:
-        if name in b:
-            lines.append(f"| {name} | {_fmt(a[name])} | {_fmt(b[name])} | {_fmt(b[name] - a[name])} |")
-    if left.rom_modules and right.rom_modules:
-        rows = [[name, left.rom_modules[name], right.rom_modules.get(name, 0), left.ram_modules.get(name, 0),
-                 right.ram_modules.get(name, 0)] for name in left.rom_modules]
-        rows.append(["total"] + [sum(m.values()) for m in (left.rom_modules, right.rom_modules,
-                                                           left.ram_modules, right.ram_modules)])
-        lines += _table("ROM and RAM by module (bytes; Zephyr rom_report / ram_report, sorted into layers):",
-                        ["module", f"ROM {left.variant}", f"ROM {right.variant}", f"RAM {left.variant}",
-                         f"RAM {right.variant}"], rows)
-    lines += _table("Rate groups as tasks (counter cycles):",
-                    ["variant", "task", "runs", "exec avg", "exec max", "late", "CPU %"],
-                    [[d.variant, t.fields["name"], t.int("runs"), t.int("exec_avg"), t.int("exec_max"), t.int("late"),
-                      t.int("cpu_permille") / 10] for d in (left, right) for t in d.run.of_kind("TASK")])
-    lines += _table("CPU by execution context (threads on rtos, TaskRunner slices on baremetal; counter cycles):",
-                    ["variant", "context", "runs", "avg", "max", "CPU %"],
-                    [[d.variant, c.fields["name"], c.int("runs"), c.int("avg"), c.int("max"),
-                      c.int("cpu_permille") / 10] for d in (left, right) for c in d.run.of_kind("CPU")])
-    probes = [f"{d.variant} {d.run.one('PROBE').fields.get('cycles_per_cycle')}" for d in (left, right)
-              if d.run.of_kind("PROBE")]
-    if probes:
-        lines += ["", f"Instrumentation cost (counter cycles per rate-group cycle): {', '.join(probes)}."]
-    verdicts = ", ".join(f"{d.variant} {'PASS' if d.run.passed else 'FAIL'}" for d in (left, right))
-    lines += ["", f"Run verdicts: {verdicts}."]
-    return "\n".join(lines)
 
 
 SCHEMA_VERSION = 1

@@ -9,7 +9,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import console, runner
+from . import console, report, results, runner
 from .workspace import KIT_ROOT, KitError, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
@@ -32,12 +32,12 @@ def _run(command: list[str], log: Path, cwd: Path = KIT_ROOT) -> int:
         return subprocess.run(command, cwd=cwd, env=environment(), stdout=out, stderr=subprocess.STDOUT).returncode
 
 
-def twister_tally(report: Path) -> Tally:
+def twister_tally(path: Path) -> Tally:
     """Count twister's test cases: passed, or failed (failed, error, blocked)."""
-    if not report.is_file():
-        raise KitError(f"twister wrote no report at {report}")
+    if not path.is_file():
+        raise KitError(f"twister wrote no report at {path}")
     tally = Tally()
-    for suite in json.loads(report.read_text()).get("testsuites", []):
+    for suite in json.loads(path.read_text()).get("testsuites", []):
         status = suite.get("status")
         if status == "passed":
             tally.passed += 1
@@ -56,10 +56,10 @@ def run_twister(platform: str, log_dir: Path) -> Tally:
     return tally
 
 
-def recorded_hashes(report: Path) -> dict[str, str]:
+def recorded_hashes(path: Path) -> dict[str, str]:
     """Scenario name -> the sample hash twister recorded (KIT HASH line)."""
     hashes: dict[str, str] = {}
-    for suite in json.loads(report.read_text()).get("testsuites", []):
+    for suite in json.loads(path.read_text()).get("testsuites", []):
         for record in suite.get("recording") or []:
             if record.get("kind") == "HASH":
                 parsed = console.parse_line(f"KIT HASH {record.get('fields', '')}")
@@ -88,8 +88,33 @@ def check_determinism(log_dir: Path) -> Tally:
     return tally
 
 
-def gtest_tally(report: Path) -> Tally:
-    data = json.loads(report.read_text())
+BASELINES = KIT_ROOT / "tests" / "baselines"
+
+
+def check_budget(board: str, log_dir: Path, budget: "report.Budget", update_baseline: bool = False) -> Tally:
+    """Results of this twister run against the committed baseline of the
+    board (tests/baselines/<board>.json): ROM, RAM, p99 and slips budgets.
+    update_baseline: make this run the baseline instead (review the diff)."""
+    baseline_path = BASELINES / f"{board.split('/', 1)[0]}.json"
+    data = results.from_twister(TWISTER_OUT)
+    current = log_dir / "results.json"
+    current.write_text(json.dumps(data, indent=2) + "\n")
+    if update_baseline:
+        baseline_path.parent.mkdir(parents=True, exist_ok=True)
+        baseline_path.write_text(json.dumps(data, indent=2) + "\n")
+        print(f"[kit]   baseline written: {baseline_path}", flush=True)
+    if not baseline_path.is_file():
+        raise KitError(f"no baseline for {board} ({baseline_path}): run `scripts/kit test --update-baseline` "
+                       "once and commit the file")
+    outcome = report.write(data, log_dir / "report", results.load(baseline_path), budget)
+    for violation in outcome.violations:
+        print(f"[kit]   budget: {violation}", flush=True)
+    print(f"[kit]   report against {baseline_path.name}: {log_dir / 'report' / 'report.html'}", flush=True)
+    return Tally(passed=1) if not outcome.violations else Tally(failed=1)
+
+
+def gtest_tally(path: Path) -> Tally:
+    data = json.loads(path.read_text())
     return Tally(passed=data["tests"] - data["failures"] - data.get("errors", 0),
                  failed=data["failures"] + data.get("errors", 0))
 
@@ -105,20 +130,20 @@ def run_host_tests(log_dir: Path) -> Tally:
     for exe in sorted((HOST_BUILD / "bin").glob("*/*")):
         if not (exe.name.startswith("app_") or exe.name.startswith("Kit_")):
             continue
-        report = log_dir / f"{exe.name}.json"
-        report.unlink(missing_ok=True)
-        code = _run([str(exe), f"--gtest_output=json:{report}"], log_dir / f"{exe.name}.log")
-        if report.is_file():
-            tally.add(gtest_tally(report))
-        if code != 0 and not report.is_file():
+        gtest_json = log_dir / f"{exe.name}.json"
+        gtest_json.unlink(missing_ok=True)
+        code = _run([str(exe), f"--gtest_output=json:{gtest_json}"], log_dir / f"{exe.name}.log")
+        if gtest_json.is_file():
+            tally.add(gtest_tally(gtest_json))
+        if code != 0 and not gtest_json.is_file():
             tally.failed += 1  # crashed before writing its report
     if tally.passed + tally.failed == 0:
         raise KitError(f"no host test executable found in {HOST_BUILD / 'bin'}")
     return tally
 
 
-def junit_tally(report: Path) -> Tally:
-    root = ET.parse(report).getroot()
+def junit_tally(path: Path) -> Tally:
+    root = ET.parse(path).getroot()
     suites = [root] if root.tag == "testsuite" else list(root)
     tests = sum(int(s.get("tests", 0)) for s in suites)
     bad = sum(int(s.get("failures", 0)) + int(s.get("errors", 0)) for s in suites)
@@ -126,9 +151,9 @@ def junit_tally(report: Path) -> Tally:
 
 
 def run_pytest(log_dir: Path) -> Tally:
-    report = log_dir / "pytest.xml"
-    code = _run(["python", "-m", "pytest", "-q", f"--junitxml={report}"], log_dir / "pytest.log",
+    xml = log_dir / "pytest.xml"
+    code = _run(["python", "-m", "pytest", "-q", f"--junitxml={xml}"], log_dir / "pytest.log",
                 cwd=KIT_ROOT / "scripts")
-    if not report.is_file():
+    if not xml.is_file():
         raise KitError(f"pytest wrote no report (exit {code}); see {log_dir / 'pytest.log'}")
-    return junit_tally(report)
+    return junit_tally(xml)

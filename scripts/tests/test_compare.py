@@ -18,18 +18,9 @@ def test_metrics_convert_cycles_to_microseconds():
     assert values["ROM (bytes)"] == 1000
 
 
-def test_markdown_puts_conditions_first_and_shows_deltas():
-    table = compare.markdown(_data("baremetal", 90000, 30000), _data("rtos", 100000, 44000, stack_used=1500))
-    first = table.splitlines()[0]
-    assert first.startswith("Conditions:") and "icount shift 4" in first and "not hardware latency" in first
-    assert "| ROM (bytes) | 90,000 | 100,000 | 10,000 |" in table
-    assert "| stacks used, peak (bytes) | 1,000 | 1,500 | 500 |" in table
-    assert "Run verdicts: baremetal PASS, rtos PASS." in table
-    assert "| rtos | idle | 2,000 | 10,069 | 11,589 | 83.7 |" in table
-
-
 def test_json_carries_records_and_footprints():
     data = compare.as_json([_data("baremetal", 1, 2), _data("rtos", 3, 4, slips=2)])
+    assert data["schema_version"] == compare.SCHEMA_VERSION
     assert data["variants"]["rtos"]["footprint"]["ram"] == 4
     assert data["variants"]["rtos"]["metrics"]["rg1kHz slips"] == 2
     assert data["conditions"]["icount_shift"] == "4"

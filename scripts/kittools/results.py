@@ -1,0 +1,87 @@
+"""A run's results file: load and check it, or build it from a twister run.
+
+The schema is documented in docs/results.md; `compare.as_json` writes it.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+from . import compare, conditions, console, modules
+from .footprint import measure
+from .workspace import KitError
+
+REQUIRED_METRICS = ("ROM (bytes)", "RAM, static (bytes)")
+
+
+def load(path: Path) -> dict[str, Any]:
+    """The results in `path`; KitError naming what is wrong if it is not a results file."""
+    if not path.is_file():
+        raise KitError(f"results file {path} does not exist (kit compare writes build/compare/comparison.json)")
+    try:
+        data = json.loads(path.read_text())
+    except json.JSONDecodeError as error:
+        raise KitError(f"results file {path} is not valid JSON: {error}") from error
+    if not isinstance(data, dict):
+        raise KitError(f"results file {path}: expected a JSON object, found {type(data).__name__}")
+    if data.get("schema_version") != compare.SCHEMA_VERSION:
+        raise KitError(f"results file {path}: schema_version {data.get('schema_version')!r}, "
+                       f"this kit reads {compare.SCHEMA_VERSION} (docs/results.md)")
+    variants = data.get("variants")
+    if not isinstance(variants, dict) or not variants:
+        raise KitError(f"results file {path}: no 'variants'")
+    for name, variant in variants.items():
+        if not isinstance(variant, dict):
+            raise KitError(f"results file {path}: variant '{name}' is not an object")
+        metrics = variant.get("metrics")
+        if not isinstance(metrics, dict):
+            raise KitError(f"results file {path}: variant '{name}' has no 'metrics'")
+        for key in REQUIRED_METRICS:
+            if not isinstance(metrics.get(key), (int, float)):
+                raise KitError(f"results file {path}: variant '{name}' lacks the metric '{key}'")
+        if not isinstance(variant.get("records"), list):
+            raise KitError(f"results file {path}: variant '{name}' has no 'records'")
+    if not isinstance(data.get("conditions"), dict):
+        raise KitError(f"results file {path}: no 'conditions'")
+    return data
+
+
+def records_of(variant: dict[str, Any]) -> console.Run:
+    """The console records of a variant, back as a Run."""
+    run = console.Run()
+    for record in variant["records"]:
+        fields = {k: str(v) for k, v in record.items() if k != "kind"}
+        run.records.append(console.Record(str(record["kind"]), fields))
+    return run
+
+
+def from_twister(twister_out: Path) -> dict[str, Any]:
+    """Results of a twister run of tests/deployment, in the results-file
+    schema: records from twister's recordings, footprint and modules from
+    the builds twister made."""
+    report = twister_out / "twister.json"
+    if not report.is_file():
+        raise KitError(f"no twister report at {report}")
+    found: list[compare.VariantData] = []
+    for suite in json.loads(report.read_text()).get("testsuites", []):
+        scenario = suite["name"].rsplit("/", 1)[-1]
+        if not scenario.startswith("kit.deployment.") or not suite.get("recording"):
+            continue
+        run = console.Run()
+        for record in suite["recording"]:
+            parsed = console.parse_line(f"KIT {record.get('kind', '')} {record.get('fields', '')}")
+            if parsed is not None:
+                run.records.append(parsed)
+        builds = [p.parent.parent for p in twister_out.glob(f"**/{scenario}/zephyr/zephyr.elf")]
+        if len(builds) != 1:
+            raise KitError(f"expected one twister build of {scenario}, found {len(builds)}")
+        build = builds[0]
+        found.append(compare.VariantData(run.variant, measure(build), run,
+                                         modules.breakdown(modules.report(build, "rom")),
+                                         modules.breakdown(modules.report(build, "ram")), conditions.read(build)))
+    if not found:
+        raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario")
+    found.sort(key=lambda d: d.variant)
+    return compare.as_json(found)

@@ -1,0 +1,88 @@
+import copy
+import json
+
+import pytest
+
+from kittools import compare, console, report, results
+from kittools.footprint import Footprint
+from kittools.workspace import KitError
+from sample_console import console_log
+
+
+def _results(**rtos_kwargs) -> dict:
+    def data(variant, rom, ram, **kwargs):
+        return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536),
+                                   console.parse(console_log(variant, **kwargs)),
+                                   {"F´ framework": 20000, "libc (picolibc, libgcc)": 9000},
+                                   {"F´ framework": 70, "libc (picolibc, libgcc)": 200})
+    return compare.as_json([data("baremetal", 96000, 30000), data("rtos", 102000, 42000, **rtos_kwargs)])
+
+
+def _write(tmp_path, name, data) -> object:
+    path = tmp_path / name
+    path.write_text(json.dumps(data))
+    return path
+
+
+def test_missing_results_file_is_explained(tmp_path):
+    with pytest.raises(KitError, match="does not exist"):
+        results.load(tmp_path / "nope.json")
+
+
+def test_malformed_results_are_explained(tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text("{not json")
+    with pytest.raises(KitError, match="not valid JSON"):
+        results.load(bad)
+    broken = _results()
+    del broken["variants"]["rtos"]["metrics"]["ROM (bytes)"]
+    with pytest.raises(KitError, match="lacks the metric 'ROM \\(bytes\\)'"):
+        results.load(_write(tmp_path, "broken.json", broken))
+    old = _results()
+    old["schema_version"] = 0
+    with pytest.raises(KitError, match="schema_version"):
+        results.load(_write(tmp_path, "old.json", old))
+
+
+def test_findings_are_generated_from_the_numbers():
+    text = report.findings(_results())
+    assert "rtos uses 5.9 KiB (6.2%) more ROM than baremetal (99.6 KiB vs 93.8 KiB)." in text.lines
+    assert any(line.startswith("rg1kHz: p99 dispatch latency") for line in text.lines)
+    assert text.lines[-1] == "Run verdicts: baremetal PASS, rtos PASS."
+
+
+def test_outputs_are_written_and_the_html_is_self_contained(tmp_path):
+    outcome = report.write(_results(), tmp_path)
+    names = {p.name for p in outcome.files}
+    assert {"report.md", "report.html", "report.json", "report.csv"} <= names
+    html = (tmp_path / "report.html").read_text()
+    assert "data:image/png;base64," in html and "http://" not in html and "https://" not in html
+    assert "not hardware latencies" in (tmp_path / "report.md").read_text()
+    assert "baremetal,ROM (bytes),96000" in (tmp_path / "report.csv").read_text()
+
+
+def test_budget_passes_on_the_baseline_itself(tmp_path):
+    data = _results()
+    outcome = report.write(data, tmp_path, baseline=copy.deepcopy(data))
+    assert outcome.violations == []
+    assert "Budget check: PASS" in (tmp_path / "report.md").read_text()
+
+
+def test_budget_fails_on_a_worsened_run(tmp_path):
+    baseline = _results()
+    worse = copy.deepcopy(baseline)
+    worse["variants"]["rtos"]["metrics"]["ROM (bytes)"] *= 1.05        # +5% ROM
+    worse["variants"]["rtos"]["metrics"]["rg1kHz latency p99 (us)"] += 20  # p99 regression
+    worse["variants"]["baremetal"]["metrics"]["rg1kHz slips"] = 3
+    outcome = report.write(worse, tmp_path, baseline=baseline)
+    assert len(outcome.violations) == 3
+    assert any("ROM (bytes)" in v and "over budget" in v for v in outcome.violations)
+    assert any("latency p99" in v and "regressed" in v for v in outcome.violations)
+    assert any("slips" in v for v in outcome.violations)
+
+
+def test_small_p99_changes_are_not_regressions(tmp_path):
+    baseline = _results()
+    noisy = copy.deepcopy(baseline)
+    noisy["variants"]["rtos"]["metrics"]["rg1kHz period error p99 (us)"] += 1.5  # +150% but under 2 us
+    assert report.write(noisy, tmp_path, baseline=baseline).violations == []
