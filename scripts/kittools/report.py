@@ -223,8 +223,8 @@ def histogram_chart(data: dict[str, Any], rate_group: str) -> Image | None:
         for index, metric in enumerate(("latency", "exec", "jitter")):
             axes = figure.add_subplot(1, 3, index + 1)
             for variant, points in sorted(series.get(metric, {}).items()):
-                axes.step([p[0] for p in points], [p[1] for p in points], where="post", label=variant)
-                axes.plot([p[0] for p in points], [p[1] for p in points], "o", markersize=3)
+                (line,) = axes.step([p[0] for p in points], [p[1] for p in points], where="post", label=variant)
+                axes.plot([p[0] for p in points], [p[1] for p in points], "o", markersize=3, color=line.get_color())
             axes.set_title(f"{rate_group} {labels[metric]}", fontsize=9)
             axes.set_xlabel("µs (bucket lower bound)", fontsize=8)
             axes.set_ylabel("cycles", fontsize=8)
