@@ -35,7 +35,7 @@ U64 s_idleCycles = 0;
 U32 s_idleWaits = 0;
 U32 s_idleMax = 0;
 
-U32 permille(U64 part, U32 whole) {
+U32 permille(U64 part, U64 whole) {
     return whole == 0 ? 0 : static_cast<U32>((part * 1000u) / whole);
 }
 
@@ -97,7 +97,7 @@ void reportStacks() {
            static_cast<unsigned>(size - untouched));
 }
 
-void reportCpu(U32 runCycles) {
+void reportCpu(U64 runCycles) {
     for (FwSizeType i = 0; i < TimedTask::taskCount(); i++) {
         const SliceRecord& task = TimedTask::record(i);
         const char* const name = activeInstanceHolding(task.argument);

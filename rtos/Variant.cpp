@@ -40,7 +40,7 @@ void printStack(const struct k_thread* thread, void* context) {
            static_cast<unsigned>(size - unused));
 }
 void printCpu(const struct k_thread* thread, void* context) {
-    const U32 runCycles = *static_cast<const U32*>(context);
+    const U64 runCycles = *static_cast<const U64*>(context);
     struct k_thread* const mutableThread = const_cast<struct k_thread*>(thread);
     const char* name = Kit::activeInstanceHolding(thread->entry.parameter1);
     if (name == nullptr) {
@@ -89,7 +89,7 @@ void reportStacks() {
     k_thread_foreach(printStack, nullptr);
 }
 
-void reportCpu(U32 runCycles) {
+void reportCpu(U64 runCycles) {
     // Counted from boot: the run plus start-up, which is short next to it
     k_thread_foreach(printCpu, &runCycles);
 }

@@ -42,9 +42,9 @@ module Kit {
   }
 
   # ----------------------------------------------------------------------
-  # Active components. Listed (and so started) in non-increasing priority:
-  # fprime-baremetal's TaskRunner::addTask (915de8e) can drop a task added
-  # after a lower-priority one.
+  # Active components. F´'s generated startTasks() starts them in name order,
+  # whatever the order here; fprime-baremetal's TaskRunner (915de8e) dropped a
+  # task in that case until the kit's patch (baremetal/patches/).
   # ----------------------------------------------------------------------
 
   instance rg1kHz: Svc.ActiveRateGroup base id 0x0100 \

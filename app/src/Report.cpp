@@ -63,7 +63,7 @@ void printStats(const char* name, const CycleStats& stats) {
 
 bool rateGroups(U32 ticks) {
     bool passed = true;
-    const U32 runCycles = ticks * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
+    const U64 runCycles = static_cast<U64>(ticks) * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         const RateGroupRecord& rg = timing.record(i);
         const U32 expected = expectedCycles(i, ticks);

@@ -37,7 +37,7 @@ void reportStacks();
 //! Print a "KIT CPU" line per execution context (thread, or cooperative
 //! task, and idle): runs, average and worst cycles per run, share of the
 //! `runCycles` the run lasted
-void reportCpu(U32 runCycles);
+void reportCpu(U64 runCycles);
 
 }  // namespace Variant
 }  // namespace Kit
