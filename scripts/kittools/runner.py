@@ -63,11 +63,11 @@ def qemu_command(build_dir: Path) -> list[str]:
 
 
 def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S,
-        on_line: Callable[[str], None] | None = None, direct: bool = False) -> str:
-    """Run the build in QEMU until the firmware's end line or a fatal error,
-    then stop QEMU. Returns the console text. `direct` runs QEMU itself (see
-    qemu_command) instead of `west build -t run`."""
-    command = qemu_command(build_dir) if direct else ["west", "build", "-d", str(build_dir), "-t", "run"]
+        on_line: Callable[[str], None] | None = None) -> str:
+    """Run the build in QEMU, exactly as its `run` target would (qemu_command),
+    until the firmware's end line or a fatal error, then stop QEMU. Returns
+    the console text."""
+    command = qemu_command(build_dir)
     process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
     assert process.stdout is not None

@@ -77,7 +77,7 @@ def check_determinism(log_dir: Path) -> Tally:
         builds = [p.parent.parent for p in TWISTER_OUT.glob(f"**/{scenario}/zephyr/zephyr.elf")]
         if len(builds) != 1:
             raise KitError(f"expected one twister build of {scenario}, found {len(builds)}")
-        text = runner.run(builds[0], log_dir / f"{scenario}.rerun.log", direct=True)
+        text = runner.run(builds[0], log_dir / f"{scenario}.rerun.log")
         again = console.parse(text).one("HASH").fields.get("fnv")
         same = again == expected
         print(f"[kit]   {scenario}: sample hash {expected}, then {again}: {'identical' if same else 'DIFFERENT'}",
