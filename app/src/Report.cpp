@@ -132,9 +132,10 @@ bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap) {
     printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));
     const bool cmdOk = commands();
     const FwEventIdType noOpEvent = cmdDisp.getIdBase() + CmdDispIds::NO_OP_RECEIVED;
-    printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u\n",
+    printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u uncounted=%u\n",
            static_cast<unsigned>(downlink.eventPackets()), static_cast<unsigned>(downlink.telemetryPackets()),
-           static_cast<unsigned>(downlink.malformedPackets()), static_cast<unsigned>(downlink.eventCount(noOpEvent)));
+           static_cast<unsigned>(downlink.malformedPackets()), static_cast<unsigned>(downlink.eventCount(noOpEvent)),
+           static_cast<unsigned>(downlink.uncountedEvents()));
     printk("KIT TICKS driven=%u fired=%u\n", static_cast<unsigned>(timing.ticksDriven()),
            static_cast<unsigned>(TickClock::ticksFired()));
     return rgOk && cmdOk && heapOk;

@@ -11,7 +11,6 @@ import subprocess
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 from . import console
 from .footprint import Footprint, measure
@@ -62,8 +61,7 @@ def qemu_command(build_dir: Path) -> list[str]:
     raise KitError(f"no QEMU command in {ninja}: is this a QEMU board build?")
 
 
-def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S,
-        on_line: Callable[[str], None] | None = None) -> str:
+def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
     """Run the build in QEMU, exactly as its `run` target would (qemu_command),
     until the firmware's end line or a fatal error, then stop QEMU. Returns
     the console text."""
@@ -86,8 +84,6 @@ def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S,
             if line == "":
                 break
             lines.append(line.rstrip("\n"))
-            if on_line is not None:
-                on_line(lines[-1])
             finished = line.startswith("KIT END") or "ZEPHYR FATAL ERROR" in line
     finally:
         selector.close()
