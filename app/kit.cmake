@@ -45,27 +45,39 @@ if(DEFINED BOARD)
 elseif(DEFINED ENV{BOARD})
     set(KIT_BOARD_SPEC "$ENV{BOARD}")
 endif()
+# The folder is the board target with '/' as '_' (mps2/an385: mps2_an385);
+# a folder named after the board alone covers all its qualifiers
+# (qemu_cortex_m3/ti_lm3s6965: qemu_cortex_m3). scripts/kittools/workspace.py
+# applies the same rule.
 if(DEFINED KIT_BOARD_SPEC)
-    string(REGEX REPLACE "/.*$" "" KIT_BOARD "${KIT_BOARD_SPEC}")
+    string(REPLACE "/" "_" KIT_BOARD "${KIT_BOARD_SPEC}")
+    if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
+        string(REGEX REPLACE "/.*$" "" KIT_BOARD "${KIT_BOARD_SPEC}")
+    endif()
     if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
         file(GLOB KIT_PORTED_BOARDS RELATIVE "${KIT_ROOT}/boards" "${KIT_ROOT}/boards/*")
         list(FILTER KIT_PORTED_BOARDS EXCLUDE REGEX "\\.")
         message(FATAL_ERROR
             "kit: board '${KIT_BOARD_SPEC}' has no kit port. Ported boards: ${KIT_PORTED_BOARDS}.\n"
-            "To bring the kit to a new board, see docs/porting.md.")
+            "To bring the kit to a new board: west kit new-board <board>, then docs/porting.md.")
     endif()
     set(KIT_BOARD_DIR "${KIT_ROOT}/boards/${KIT_BOARD}")
+    foreach(KIT_BOARD_FILE IN ITEMS kit.conf baremetal.conf rtos.conf Tables.fpp)
+        if(NOT EXISTS "${KIT_BOARD_DIR}/${KIT_BOARD_FILE}")
+            message(FATAL_ERROR "kit: boards/${KIT_BOARD}/${KIT_BOARD_FILE} is missing; every port has one "
+                "(see docs/porting.md).")
+        endif()
+    endforeach()
 else()
     message(FATAL_ERROR "kit: no board given. Use west build -b qemu_cortex_m3 ...")
 endif()
 
 # --- Configuration fragments -----------------------------------------
-# Kit-wide settings, then the variant's, then the board's.
+# Kit-wide settings, then the variant's, then the board's (both variants',
+# then this variant's: stack sizes).
 if(NOT DEFINED CONF_FILE)
-    set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_VARIANT_DIR}/variant.conf" "${KIT_BOARD_DIR}/kit.conf")
-    if(EXISTS "${KIT_BOARD_DIR}/${KIT_VARIANT}.conf")
-        list(APPEND CONF_FILE "${KIT_BOARD_DIR}/${KIT_VARIANT}.conf")
-    endif()
+    set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_VARIANT_DIR}/variant.conf" "${KIT_BOARD_DIR}/kit.conf"
+        "${KIT_BOARD_DIR}/${KIT_VARIANT}.conf")
 endif()
 if(EXISTS "${KIT_BOARD_DIR}/app.overlay" AND NOT DEFINED DTC_OVERLAY_FILE)
     set(DTC_OVERLAY_FILE "${KIT_BOARD_DIR}/app.overlay")
@@ -154,6 +166,15 @@ add_fprime_subdirectory("${KIT_ROOT}/app/config")
 add_fprime_subdirectory("${KIT_ROOT}/app/Components")
 add_fprime_subdirectory("${KIT_ROOT}/app/Top")
 
+# The scenario the run plays (CONFIG_KIT_SCENARIO): one source file each
+set(KIT_SCENARIO_SOURCE "${KIT_ROOT}/app/scenarios/${CONFIG_KIT_SCENARIO}.cpp")
+if(NOT EXISTS "${KIT_SCENARIO_SOURCE}")
+    file(GLOB KIT_SCENARIOS RELATIVE "${KIT_ROOT}/app/scenarios" "${KIT_ROOT}/app/scenarios/*.cpp")
+    string(REPLACE ".cpp" "" KIT_SCENARIOS "${KIT_SCENARIOS}")
+    message(FATAL_ERROR "kit: unknown scenario CONFIG_KIT_SCENARIO=\"${CONFIG_KIT_SCENARIO}\"; "
+        "the scenarios are: ${KIT_SCENARIOS} (app/scenarios/).")
+endif()
+
 # The variant: its config, its OS implementations and its main-loop half.
 # variant.cmake sets KIT_VARIANT_SOURCES and KIT_VARIANT_IMPLEMENTATIONS.
 include("${KIT_VARIANT_DIR}/variant.cmake")
@@ -161,8 +182,11 @@ include("${KIT_VARIANT_DIR}/variant.cmake")
 register_fprime_zephyr_deployment(kit_${KIT_VARIANT}
     SOURCES
         "${KIT_ROOT}/app/src/main.cpp"
+        "${KIT_ROOT}/app/src/Session.cpp"
         "${KIT_ROOT}/app/src/Report.cpp"
+        "${KIT_ROOT}/app/src/Fatal.cpp"
         "${KIT_ROOT}/app/src/TickClock.cpp"
+        "${KIT_SCENARIO_SOURCE}"
         "${KIT_ROOT}/app/src/CountingAllocator.cpp"
         "${KIT_ROOT}/app/src/HeapMonitor.cpp"
         ${KIT_VARIANT_SOURCES}

@@ -29,6 +29,11 @@ constexpr U32 DRAIN_PASSES = 32;
 // high-water mark is where the paint ends.
 constexpr U32 PAINT = 0xCAFEF00Du;
 constexpr U32 PAINT_GUARD_BYTES = 128;  // below the current frame, left alone
+// The stack guard: the lowest words of the stack, painted like the rest. No
+// MPU is assumed, so nothing stops an overflow; a guard word that lost its
+// paint means the stack reached its last 32 bytes (or went past them), and
+// the run stops before corrupted memory is trusted.
+constexpr U32 GUARD_WORDS = 8;
 
 // Cycles the main loop spent asleep waiting for a tick, and how often
 U64 s_idleCycles = 0;
@@ -42,6 +47,19 @@ U32 permille(U64 part, U64 whole) {
 U32* stackBottom() {
     return reinterpret_cast<U32*>(K_KERNEL_STACK_BUFFER(z_main_stack));
 }
+
+// One pass of every task, then the stack guard
+void runPass() {
+    Os::Baremetal::TaskRunner::getSingleton().runAll();
+    const U32* const bottom = stackBottom();
+    for (U32 i = 0; i < GUARD_WORDS; i++) {
+        if (bottom[i] != PAINT) {
+            printk("KIT FATAL stack=main guard_word=%u address=0x%08x: stack overflow\n", static_cast<unsigned>(i),
+                   static_cast<unsigned>(reinterpret_cast<uintptr_t>(&bottom[i])));
+            k_panic();
+        }
+    }
+}
 }  // namespace
 
 const char* name() {
@@ -50,13 +68,20 @@ const char* name() {
 
 void onTickIsr() {}
 
+const char* contextName() {
+    return "main";  // the only context besides interrupts
+}
+
 void waitForTick(U32 handled) {
     const U32 begin = TickClock::now();
-    // Check and sleep atomically, so a tick between the check and the WFI
-    // cannot be slept through.
+    // Check and sleep without a window: on ARMv7-M k_cpu_idle() masks with
+    // PRIMASK before it lifts the irq_lock (BASEPRI) and sleeps in WFI, so a
+    // tick that fires after the check still wakes it. Not
+    // k_cpu_atomic_idle(): it sleeps in WFE, which QEMU executes as a busy
+    // spin, costing wall time (a soak ran 5x slower) though not virtual time.
     unsigned int key = irq_lock();
     while (TickClock::ticksFired() == handled) {
-        k_cpu_atomic_idle(key);
+        k_cpu_idle();
         key = irq_lock();
     }
     irq_unlock(key);
@@ -67,12 +92,12 @@ void waitForTick(U32 handled) {
 }
 
 void afterTick() {
-    Os::Baremetal::TaskRunner::getSingleton().runAll();
+    runPass();
 }
 
 void drain() {
     for (U32 pass = 0; pass < DRAIN_PASSES; pass++) {
-        Os::Baremetal::TaskRunner::getSingleton().runAll();
+        runPass();
     }
 }
 
@@ -84,17 +109,20 @@ void prepareStacks() {
     }
 }
 
-void reportStacks() {
+U32 stackUsedTotal() {
+    // Where the paint ends is the high-water mark
     const U32 size = K_KERNEL_STACK_SIZEOF(z_main_stack);
     const U32* word = stackBottom();
     const U32* const top = word + size / sizeof(U32);
     while (word < top && *word == PAINT) {
         word++;
     }
-    const U32 untouched =
-        static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
-    printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(size),
-           static_cast<unsigned>(size - untouched));
+    return size - static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
+}
+
+void reportStacks() {
+    printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(K_KERNEL_STACK_SIZEOF(z_main_stack)),
+           static_cast<unsigned>(stackUsedTotal()));
 }
 
 void reportCpu(U64 runCycles) {

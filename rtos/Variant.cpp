@@ -24,28 +24,37 @@ constexpr U32 DRAIN_MS = 50;
 // F´ names its threads "ActComp_<n>" when object names are compiled out; a
 // thread's entry argument is F´'s task wrapper, a member of the component
 // object, so the instance holding it names the thread.
-void printStack(const struct k_thread* thread, void* context) {
-    (void)context;
-    struct k_thread* const mutableThread = const_cast<struct k_thread*>(thread);
+const char* threadName(const struct k_thread* thread) {
     const char* name = Kit::activeInstanceHolding(thread->entry.parameter1);
     if (name == nullptr) {
-        name = k_thread_name_get(mutableThread);
+        name = k_thread_name_get(const_cast<struct k_thread*>(thread));
     }
+    return name != nullptr ? name : "?";
+}
+
+// Bytes of the thread's stack ever used (the thread analyzer's paint scan)
+U32 stackUsed(const struct k_thread* thread) {
     size_t unused = 0;
     const size_t size = thread->stack_info.size;
     if (k_thread_stack_space_get(thread, &unused) != 0) {
         unused = size;  // not measurable: reported as unused, never as fitting
     }
-    printk("KIT STACK name=%s size=%u used=%u\n", name != nullptr ? name : "?", static_cast<unsigned>(size),
-           static_cast<unsigned>(size - unused));
+    return static_cast<U32>(size - unused);
 }
+
+void printStack(const struct k_thread* thread, void* context) {
+    (void)context;
+    printk("KIT STACK name=%s size=%u used=%u\n", threadName(thread), static_cast<unsigned>(thread->stack_info.size),
+           static_cast<unsigned>(stackUsed(thread)));
+}
+
+void addStack(const struct k_thread* thread, void* context) {
+    *static_cast<U32*>(context) += stackUsed(thread);
+}
+
 void printCpu(const struct k_thread* thread, void* context) {
     const U64 runCycles = *static_cast<const U64*>(context);
     struct k_thread* const mutableThread = const_cast<struct k_thread*>(thread);
-    const char* name = Kit::activeInstanceHolding(thread->entry.parameter1);
-    if (name == nullptr) {
-        name = k_thread_name_get(mutableThread);
-    }
     k_thread_runtime_stats_t stats = {};
     if (k_thread_runtime_stats_get(mutableThread, &stats) != 0) {
         return;
@@ -53,7 +62,7 @@ void printCpu(const struct k_thread* thread, void* context) {
     // A run is a scheduling window: from being switched in to switched out
     const U64 runs = stats.average_cycles == 0 ? 0 : stats.total_cycles / stats.average_cycles;
     const U32 share = runCycles == 0 ? 0 : static_cast<U32>((stats.total_cycles * 1000u) / runCycles);
-    printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", name != nullptr ? name : "?",
+    printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", threadName(thread),
            static_cast<unsigned>(runs), static_cast<unsigned>(stats.average_cycles),
            static_cast<unsigned>(stats.peak_cycles), static_cast<unsigned>(share));
 }
@@ -61,6 +70,10 @@ void printCpu(const struct k_thread* thread, void* context) {
 
 const char* name() {
     return "rtos";
+}
+
+const char* contextName() {
+    return threadName(k_current_get());
 }
 
 void onTickIsr() {
@@ -87,6 +100,12 @@ void prepareStacks() {
 
 void reportStacks() {
     k_thread_foreach(printStack, nullptr);
+}
+
+U32 stackUsedTotal() {
+    U32 total = 0;
+    k_thread_foreach(addStack, &total);
+    return total;
 }
 
 void reportCpu(U64 runCycles) {

@@ -10,6 +10,8 @@ fi
 export VIRTUAL_ENV="$_kit_root/.venv"
 case ":$PATH:" in *":$VIRTUAL_ENV/bin:"*) ;; *) export PATH="$VIRTUAL_ENV/bin:$PATH" ;; esac
 export ZEPHYR_BASE="$_kit_root/deps/zephyr"
+# ccache hits across build folders only with paths hashed relative to the clone
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$_kit_root}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 if [ -z "${ZEPHYR_TOOLCHAIN_VARIANT:-}" ] && [ -z "${ZEPHYR_SDK_INSTALL_DIR:-}" ]; then
   export ZEPHYR_TOOLCHAIN_VARIANT=gnuarmemb
   _kit_gcc=$(command -v arm-none-eabi-gcc || true)

@@ -11,16 +11,38 @@
 
 #include "Svc/CmdDispatcher/CommandDispatcherComponentAc.hpp"
 #include "app/Components/Controller/ControllerComponentAc.hpp"
+#include "app/Components/Faults/FaultsComponentAc.hpp"
+#include "app/Components/Load/LoadComponentAc.hpp"
+#include "app/Components/Timing/TimingComponentAc.hpp"
 
 namespace Kit {
 
 struct CmdDispIds : Svc::CommandDispatcherComponentBase {
     static constexpr FwOpcodeType NO_OP = OPCODE_CMD_NO_OP;
     static constexpr FwEventIdType NO_OP_RECEIVED = EVENTID_NOOPRECEIVED;
+    static constexpr FwEventIdType MALFORMED_COMMAND = EVENTID_MALFORMEDCOMMAND;
+    static constexpr FwEventIdType INVALID_COMMAND = EVENTID_INVALIDCOMMAND;
+    static constexpr FwEventIdType OPCODE_ERROR = EVENTID_OPCODEERROR;
 };
 
 struct ControllerIds : ControllerComponentBase {
     static constexpr FwOpcodeType SET_SETPOINT = OPCODE_SET_SETPOINT;
+};
+
+struct LoadIds : LoadComponentBase {
+    static constexpr FwOpcodeType SET_SLICE = OPCODE_SET_SLICE;
+    static constexpr FwOpcodeType SET_BURST = OPCODE_SET_BURST;
+    static constexpr FwEventIdType MESSAGES_DROPPED = EVENTID_MESSAGESDROPPED;
+};
+
+struct FaultsIds : FaultsComponentBase {
+    static constexpr FwOpcodeType OVERRUN = OPCODE_OVERRUN;
+    static constexpr FwOpcodeType STACK_OVERFLOW = OPCODE_STACK_OVERFLOW;
+    static constexpr FwOpcodeType ASSERT = OPCODE_ASSERT;
+};
+
+struct TimingIds : TimingComponentBase {
+    static constexpr FwEventIdType RATE_GROUP_SLIP = EVENTID_RATEGROUPSLIP;
 };
 
 }  // namespace Kit

@@ -21,6 +21,7 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
     {"rg1kHz", &rg1kHz, sizeof(rg1kHz)}, {"rg100Hz", &rg100Hz, sizeof(rg100Hz)},
     {"rg10Hz", &rg10Hz, sizeof(rg10Hz)}, {"cmdDisp", &cmdDisp, sizeof(cmdDisp)},
     {"events", &events, sizeof(events)}, {"tlmSend", &tlmSend, sizeof(tlmSend)},
+    {"load", &load, sizeof(load)},
 };
 
 const char* activeInstanceHolding(const void* address) {
@@ -36,20 +37,6 @@ const char* activeInstanceHolding(const void* address) {
 
 namespace {
 
-// The uplink script: at 10 Hz cycle 2 a NO_OP, then the controller's setpoint
-// changed and changed back, so a run exercises dispatch, arguments and events.
-Uplink::Frame s_script[3];
-
-void buildScript() {
-    s_script[0] = Uplink::commandFrame(2, noOpOpcode(), nullptr, 0);
-    // SET_SETPOINT(I32) takes its argument big-endian, as F´ serializes it
-    const U8 setpointUp[4] = {0x00, 0x00, 0x07, 0xD0};    // 2000
-    const U8 setpointBack[4] = {0x00, 0x00, 0x03, 0xE8};  // 1000
-    const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
-    s_script[1] = Uplink::commandFrame(4, setSetpoint, setpointUp, sizeof setpointUp);
-    s_script[2] = Uplink::commandFrame(8, setSetpoint, setpointBack, sizeof setpointBack);
-}
-
 void configureTopology() {
     Svc::RateGroupDriver::DividerSet dividers;
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
@@ -64,9 +51,6 @@ void configureTopology() {
     rg100Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
     rg10Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
 
-    buildScript();
-    uplink.configure(s_script, FW_NUM_ARRAY_ELEMENTS(s_script));
-
     // Time starts at zero at boot; there is no ground to set it
     Os::RawTime now;
     (void)now.now();
@@ -77,6 +61,10 @@ void configureTopology() {
 
 FwOpcodeType noOpOpcode() {
     return cmdDisp.getIdBase() + CmdDispIds::NO_OP;
+}
+
+Uplink::Frame noOpFrame(U32 cycle) {
+    return Uplink::commandFrame(cycle, noOpOpcode(), nullptr, 0);
 }
 
 U32 expectedCycles(FwIndexType rg, U32 ticks) {

@@ -19,7 +19,7 @@ struct ActiveInstance {
     const void* object;  //!< the instance; its task's entry argument lies inside it
     FwSizeType size;
 };
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 6;
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 7;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr
@@ -36,6 +36,9 @@ U32 expectedCycles(FwIndexType rg, U32 ticks);
 
 //! Opcode of the dispatcher's built-in NO_OP (its base ID + 0)
 FwOpcodeType noOpOpcode();
+
+//! A NO_OP command frame, sent at 10 Hz cycle `cycle` of a play
+Uplink::Frame noOpFrame(U32 cycle);
 
 }  // namespace Kit
 

@@ -1,36 +1,7 @@
 module Kit {
 
-  # ----------------------------------------------------------------------
-  # The priority table, written once in F´'s convention: a higher number is
-  # more urgent. The baremetal TaskRunner runs tasks in this order within a
-  # pass; the RTOS variant maps it onto Zephyr's preemptive priorities (where
-  # lower is more urgent) in rtos/Os/PriorityTask.cpp. The tick (the main
-  # loop) is above all of them in both.
-  # ----------------------------------------------------------------------
-  module Priorities {
-    constant rg1kHz = 12
-    constant rg100Hz = 11
-    constant rg10Hz = 10
-    constant cmdDisp = 6
-    constant events = 5
-    constant tlmSend = 4
-  }
-
-  # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
-  # stack and ignores them). From the thread analyzer's high-water marks
-  # ("KIT STACK" lines of a nominal run): cmdDisp 1320 B, rg10Hz 976,
-  # events 640, rg100Hz/rg1kHz 528, tlmSend 368. Zephyr's thread pool has one
-  # slot size for all, so every task gets the largest need plus ~35% for
-  # paths a nominal run does not take (asserts, fault events): 1792 B, the
-  # CONFIG_DYNAMIC_THREAD_STACK_SIZE of rtos/variant.conf.
-  module Stacks {
-    constant rg1kHz = 1792
-    constant rg100Hz = 1792
-    constant rg10Hz = 1792
-    constant cmdDisp = 1792
-    constant events = 1792
-    constant tlmSend = 1792
-  }
+  # The priority and stack table (Kit.Priorities, Kit.Stacks) is the
+  # board's: boards/<board>/Tables.fpp.
 
   # Queue depths: a rate group holds one pending cycle (a second is a slip);
   # the services absorb a burst of a few messages.
@@ -39,6 +10,10 @@ module Kit {
     constant cmdDisp = 4
     constant events = 8
     constant tlmSend = 2
+    # 8 slices (~80 ms at 100 Hz) or a burst of 8 with room for the next slice;
+    # a longer burst overflows it, which is how an overrun of the load is
+    # provoked (dropped and counted, never blocking the rate group)
+    constant load = 10
   }
 
   # ----------------------------------------------------------------------
@@ -77,6 +52,11 @@ module Kit {
     stack size Stacks.tlmSend \
     priority Priorities.tlmSend
 
+  instance load: Kit.Load base id 0x1600 \
+    queue size Queues.load \
+    stack size Stacks.load \
+    priority Priorities.load
+
   # ----------------------------------------------------------------------
   # Passive components
   # ----------------------------------------------------------------------
@@ -94,6 +74,8 @@ module Kit {
   instance uplink: Kit.Uplink base id 0x1400
 
   instance downlink: Kit.Downlink base id 0x1500
+
+  instance faults: Kit.Faults base id 0x1700
 
   instance osTime: Svc.OsTime base id 0x0800
 

@@ -9,6 +9,7 @@ module Kit {
     instance cmdDisp
     instance events
     instance tlmSend
+    instance load
     instance rateGroupDriver
     instance timing
     instance controller
@@ -16,6 +17,7 @@ module Kit {
     instance housekeeping
     instance uplink
     instance downlink
+    instance faults
     instance osTime
     instance fatalAdapter
     instance fatalHandler
@@ -33,12 +35,15 @@ module Kit {
       rateGroupDriver.CycleOut[0] -> rg1kHz.CycleIn
       rg1kHz.RateGroupMemberOut[0] -> timing.cycleStart[0]
       rg1kHz.RateGroupMemberOut[1] -> controller.schedIn
-      rg1kHz.RateGroupMemberOut[2] -> timing.cycleEnd[0]
+      rg1kHz.RateGroupMemberOut[2] -> faults.schedIn[0]
+      rg1kHz.RateGroupMemberOut[3] -> timing.cycleEnd[0]
 
       rateGroupDriver.CycleOut[1] -> rg100Hz.CycleIn
       rg100Hz.RateGroupMemberOut[0] -> timing.cycleStart[1]
       rg100Hz.RateGroupMemberOut[1] -> monitor.schedIn
-      rg100Hz.RateGroupMemberOut[2] -> timing.cycleEnd[1]
+      rg100Hz.RateGroupMemberOut[2] -> load.sliceIn
+      rg100Hz.RateGroupMemberOut[3] -> faults.schedIn[1]
+      rg100Hz.RateGroupMemberOut[4] -> timing.cycleEnd[1]
 
       rateGroupDriver.CycleOut[2] -> rg10Hz.CycleIn
       rg10Hz.RateGroupMemberOut[0] -> timing.cycleStart[2]
@@ -46,7 +51,14 @@ module Kit {
       rg10Hz.RateGroupMemberOut[2] -> uplink.schedIn
       rg10Hz.RateGroupMemberOut[3] -> tlmSend.Run
       rg10Hz.RateGroupMemberOut[4] -> cmdDisp.run
-      rg10Hz.RateGroupMemberOut[5] -> timing.cycleEnd[2]
+      rg10Hz.RateGroupMemberOut[5] -> load.burstIn
+      rg10Hz.RateGroupMemberOut[6] -> faults.schedIn[2]
+      rg10Hz.RateGroupMemberOut[7] -> timing.cycleEnd[2]
+    }
+
+    # The background load's burst goes through its own queue
+    connections Load {
+      load.ioOut -> load.ioIn
     }
 
     connections Control {

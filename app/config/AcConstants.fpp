@@ -1,8 +1,8 @@
 # Port-array sizes, cut to what the kit's topology uses: every port is an
 # object in RAM, so the F´ defaults (sized for a Linux Ref app) cost kilobytes.
 
-@ Members per active rate group (probe start + up to 3 components + probe end)
-constant ActiveRateGroupOutputPorts = 6
+@ Members per active rate group (probe start + up to 6 components + probe end)
+constant ActiveRateGroupOutputPorts = 8
 
 constant PassiveRateGroupOutputPorts = 1
 

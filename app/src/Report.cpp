@@ -61,6 +61,8 @@ void printStats(const char* name, const CycleStats& stats) {
            static_cast<unsigned>(stats.max()));
 }
 
+}  // namespace
+
 bool rateGroups(U32 ticks) {
     bool passed = true;
     const U64 runCycles = static_cast<U64>(ticks) * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
@@ -92,20 +94,6 @@ bool rateGroups(U32 ticks) {
     return passed;
 }
 
-bool commands() {
-    bool passed = true;
-    for (FwSizeType i = 0; i < uplink.frameCount(); i++) {
-        const Uplink::FrameResult& result = uplink.result(i);
-        const bool ok = result.sent && result.answered && result.response == Fw::CmdResponse::OK;
-        passed = passed && ok;
-        printk("KIT CMD frame=%u opcode=0x%x noop=%s response=%s\n", static_cast<unsigned>(i),
-               static_cast<unsigned>(result.opcode), (result.opcode == noOpOpcode()) ? "yes" : "no",
-               result.answered ? responseName(result.response) : "NONE");
-    }
-    return passed;
-}
-
-}  // namespace
 
 void banner(const char* variant) {
     printk(
@@ -117,20 +105,20 @@ void banner(const char* variant) {
         static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
 }
 
-bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap) {
-    const bool rgOk = rateGroups(ticks);
-    const bool heapOk = HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
-    printk(
-        "KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
-        "failures=%u arena=%u\n",
-        static_cast<unsigned>(heap.peakBytes()), static_cast<unsigned>(heap.allocations()),
-        static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
-        static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
-        static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
-    printk("KIT HASH samples=%u fnv=0x%08x\n", static_cast<unsigned>(timing.sampleHash().samples()),
-           static_cast<unsigned>(timing.sampleHash().value()));
-    printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));
-    const bool cmdOk = commands();
+bool commands(const Uplink::Frame* frames, FwSizeType count) {
+    FW_ASSERT(frames != nullptr || count == 0);
+    bool passed = true;
+    for (FwSizeType i = 0; i < count; i++) {
+        const Uplink::Frame& frame = frames[i];
+        passed = passed && frame.asExpected();
+        printk("KIT CMD frame=%u opcode=0x%x noop=%s response=%s expected=%s\n", static_cast<unsigned>(i),
+               static_cast<unsigned>(frame.result.opcode), (frame.result.opcode == noOpOpcode()) ? "yes" : "no",
+               frame.result.answered ? responseName(frame.result.response) : "NONE", responseName(frame.expected));
+    }
+    return passed;
+}
+
+bool downlinkAndTicks() {
     const FwEventIdType noOpEvent = cmdDisp.getIdBase() + CmdDispIds::NO_OP_RECEIVED;
     printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u uncounted=%u\n",
            static_cast<unsigned>(downlink.eventPackets()), static_cast<unsigned>(downlink.telemetryPackets()),
@@ -138,7 +126,31 @@ bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap) {
            static_cast<unsigned>(downlink.uncountedEvents()));
     printk("KIT TICKS driven=%u fired=%u\n", static_cast<unsigned>(timing.ticksDriven()),
            static_cast<unsigned>(TickClock::ticksFired()));
-    return rgOk && cmdOk && heapOk;
+    return downlink.malformedPackets() == 0 && downlink.uncountedEvents() == 0;
+}
+
+bool heap(const CountingAllocator& allocator) {
+    printk(
+        "KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
+        "failures=%u arena=%u\n",
+        static_cast<unsigned>(allocator.peakBytes()), static_cast<unsigned>(allocator.allocations()),
+        static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
+        static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
+        static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
+    return HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
+}
+
+void hash() {
+    printk("KIT HASH samples=%u fnv=0x%08x\n", static_cast<unsigned>(timing.sampleHash().samples()),
+           static_cast<unsigned>(timing.sampleHash().value()));
+}
+
+bool results(U32 ticks, U32 probeCost, const CountingAllocator& allocator) {
+    const bool rgOk = rateGroups(ticks);
+    const bool heapOk = heap(allocator);
+    hash();
+    printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));
+    return rgOk && heapOk;
 }
 
 void end(const char* variant, bool passed) {

@@ -9,6 +9,7 @@
 #define KIT_REPORT_HPP
 
 #include <Fw/FPrimeBasicTypes.hpp>
+#include "app/Components/Uplink/Uplink.hpp"
 #include "app/src/CountingAllocator.hpp"
 
 namespace Kit {
@@ -16,10 +17,25 @@ namespace Report {
 
 void banner(const char* variant);
 
-//! Print the results of a run of `ticks` ticks; true when every check passed.
-//! probeCost: the timing probe's cycles per rate-group cycle (start + end);
-//! heap: F´'s allocator, whose use is reported.
-bool results(U32 ticks, U32 probeCost, const CountingAllocator& heap);
+//! RG, TASK and HIST lines of every rate group over a segment of `ticks`
+//! ticks; true when each ran exactly its cycles, without slips
+bool rateGroups(U32 ticks);
+
+//! The HEAP line; true when nothing was allocated after init and nothing failed
+bool heap(const CountingAllocator& allocator);
+
+//! The HASH line: every timing sample of the run, hashed (determinism check)
+void hash();
+
+//! A measured run's record: rateGroups(), heap(), the sample hash and the
+//! probe's own cost (cycles per rate-group cycle); true when both passed
+bool results(U32 ticks, U32 probeCost, const CountingAllocator& allocator);
+
+//! A CMD line per uplinked frame; true when each was answered as expected
+bool commands(const Uplink::Frame* frames, FwSizeType count);
+
+//! DOWNLINK and TICKS lines; true when every packet was decoded and counted
+bool downlinkAndTicks();
 
 void end(const char* variant, bool passed);
 

@@ -47,6 +47,10 @@ U32 stampOf(U32 tick) {
 namespace TickControl {
 
 void start(U32 periodUs) {
+    // Each segment numbers its ticks from zero (the timer is stopped here, so
+    // the ISR cannot race this store); a tick that fired after the previous
+    // segment's last handled one is dropped with it.
+    TickClock::s_fired = 0;
     k_timer_init(&TickClock::s_timer, TickClock::onExpiry, nullptr);
     k_timer_start(&TickClock::s_timer, K_USEC(periodUs), K_USEC(periodUs));
 }

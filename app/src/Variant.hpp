@@ -34,6 +34,13 @@ void prepareStacks();
 //! Print a "KIT STACK" line per stack with its size and high-water mark
 void reportStacks();
 
+//! The high-water marks of all stacks, added up, in bytes
+U32 stackUsedTotal();
+
+//! The execution context running now, for a fatal report: the active
+//! component whose thread it is (rtos), or "main" (baremetal)
+const char* contextName();
+
 //! Print a "KIT CPU" line per execution context (thread, or cooperative
 //! task, and idle): runs, average and worst cycles per run, share of the
 //! `runCycles` the run lasted

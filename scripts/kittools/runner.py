@@ -61,30 +61,46 @@ def qemu_command(build_dir: Path) -> list[str]:
     raise KitError(f"no QEMU command in {ninja}: is this a QEMU board build?")
 
 
+# A line that ends a run: the firmware's end line, or the halt marker every
+# fatal path prints last (app/src/Fatal.cpp; twister fails on it at once).
+HALT_MARKER = "PROJECT EXECUTION FAILED"
+
+
+def ends_run(line: str) -> bool:
+    return line.startswith(("KIT END", "KIT HALT")) or HALT_MARKER in line
+
+
 def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
     """Run the build in QEMU, exactly as its `run` target would (qemu_command),
-    until the firmware's end line or a fatal error, then stop QEMU. Returns
+    until the firmware's end line or a fatal report, then stop QEMU. Returns
     the console text."""
     command = qemu_command(build_dir)
     process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
     assert process.stdout is not None
+    fd = process.stdout.fileno()
     lines: list[str] = []
+    partial = b""
     finished = False
     deadline = time.monotonic() + timeout_s
     selector = selectors.DefaultSelector()
-    selector.register(process.stdout, selectors.EVENT_READ)
+    selector.register(fd, selectors.EVENT_READ)
     try:
+        # Raw reads, not readline(): a buffered reader can hold the end line
+        # in its buffer while select() waits on a pipe that stays empty.
         while time.monotonic() < deadline and not finished:
             if not selector.select(timeout=1.0):
                 if process.poll() is not None:
                     break
                 continue
-            line = process.stdout.readline()
-            if line == "":
+            chunk = os.read(fd, 65536)
+            if not chunk:
                 break
-            lines.append(line.rstrip("\n"))
-            finished = line.startswith("KIT END") or "ZEPHYR FATAL ERROR" in line
+            *complete, partial = (partial + chunk).split(b"\n")
+            for raw in complete:
+                line = raw.decode(errors="replace").rstrip("\r")
+                lines.append(line)
+                finished = finished or ends_run(line)
     finally:
         selector.close()
         if process.poll() is None:

@@ -54,6 +54,17 @@ void Timing::tick() {
     this->CycleOut_out(0, m_rawTime);
 }
 
+void Timing::restart(U32 hyperperiod) {
+    FW_ASSERT(hyperperiod > 0);
+    FW_ASSERT((m_ticksDriven % hyperperiod) == 0, static_cast<FwAssertArgType>(m_ticksDriven),
+              static_cast<FwAssertArgType>(hyperperiod));
+    for (FwIndexType i = 0; i < m_count; i++) {
+        FW_ASSERT(!m_records[i].running, static_cast<FwAssertArgType>(i));
+        this->resetRecord(i);
+    }
+    m_ticksDriven = 0;
+}
+
 const RateGroupRecord& Timing::record(FwIndexType rateGroup) const {
     FW_ASSERT(rateGroup >= 0 && rateGroup < m_count, static_cast<FwAssertArgType>(rateGroup));
     return m_records[rateGroup];

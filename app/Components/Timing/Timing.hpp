@@ -53,6 +53,13 @@ class Timing final : public TimingComponentBase {
     //! Called by the variant's main loop once per board tick, in tick order
     void tick();
 
+    //! Start a new measured segment: every record back to empty and the tick
+    //! count to zero (the tick clock restarts too), the sample hash kept. Call
+    //! between segments, with the tick stopped and every rate group idle; the
+    //! segment before must have lasted a whole number of `hyperperiod` ticks so
+    //! the rate group driver's phase matches the records' again.
+    void restart(U32 hyperperiod);
+
     FwIndexType rateGroupCount() const { return m_count; }
     const RateGroupRecord& record(FwIndexType rateGroup) const;
     //! Ticks handed to the rate group driver

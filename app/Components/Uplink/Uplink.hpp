@@ -14,13 +14,6 @@ class Uplink final : public UplinkComponentBase {
     static constexpr FwSizeType FRAME_MAX = 16;   //!< bytes in one frame
     static constexpr FwSizeType SCRIPT_MAX = 16;  //!< frames in one script
 
-    //! One uplinked frame: raw bytes, sent at a given 10 Hz cycle
-    struct Frame {
-        U32 cycle;
-        U8 size;
-        U8 bytes[FRAME_MAX];
-    };
-
     //! What happened to a frame
     struct FrameResult {
         bool sent;
@@ -29,17 +22,33 @@ class Uplink final : public UplinkComponentBase {
         Fw::CmdResponse response;
     };
 
-    //! Build a well-formed command frame: descriptor, opcode, argument bytes
+    //! One uplinked frame: raw bytes, sent at a given 10 Hz cycle counted from
+    //! play(), the answer the scenario expects, and what happened to it
+    struct Frame {
+        U32 cycle;
+        U8 size;
+        U8 bytes[FRAME_MAX];
+        Fw::CmdResponse expected;
+        FrameResult result;
+
+        //! Answered as expected
+        bool asExpected() const { return result.sent && result.answered && result.response == expected; }
+    };
+
+    //! A well-formed command frame: descriptor, opcode, argument bytes
     static Frame commandFrame(U32 cycle, FwOpcodeType opcode, const U8* args, FwSizeType argSize);
+
+    //! Any bytes at all, as a noisy link delivers them; the dispatcher must
+    //! reject them with `expected`
+    static Frame rawFrame(U32 cycle, const U8* bytes, FwSizeType size, Fw::CmdResponse expected);
 
     explicit Uplink(const char* const compName);
     ~Uplink();
 
-    //! Script to play; the array must outlive the component
-    void configure(const Frame* frames, FwSizeType count);
-
-    FwSizeType frameCount() const { return m_count; }
-    const FrameResult& result(FwSizeType index) const;
+    //! Send these frames, each `cycle` 10 Hz cycles from now; the array (which
+    //! receives the results) must outlive the play. Replaces the frames of an
+    //! earlier play: call it between run segments, when nothing is in flight.
+    void play(Frame* frames, FwSizeType count);
 
   private:
     void schedIn_handler(FwIndexType portNum, U32 context) override;
@@ -48,10 +57,10 @@ class Uplink final : public UplinkComponentBase {
                                U32 cmdSeq,
                                const Fw::CmdResponse& response) override;
 
-    const Frame* m_frames;
+    Frame* m_frames;
     FwSizeType m_count;
-    FrameResult m_results[SCRIPT_MAX];
-    U32 m_cycle;
+    U32 m_cycle;       //!< 10 Hz cycles since boot
+    U32 m_playStart;   //!< m_cycle when play() was called
     U32 m_sent;
     U32 m_rejected;
 };

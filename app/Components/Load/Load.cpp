@@ -1,0 +1,92 @@
+// ======================================================================
+// \title  Load.cpp
+// \brief  Background load, set at run time by command
+// ======================================================================
+#include "app/Components/Load/Load.hpp"
+#include "app/Components/Timing/Busy.hpp"
+
+namespace Kit {
+
+Load::Load(const char* const compName)
+    : LoadComponentBase(compName),
+      m_sliceUs(0),
+      m_burstCount(0),
+      m_burstUs(0),
+      m_processed(0),
+      m_dropped(0),
+      m_lcg(1) {}
+
+Load::~Load() {}
+
+void Load::compute(U32 us) {
+    if (us > 0) {
+        m_lcg = busyFor(us, m_lcg);
+    }
+    m_processed++;
+}
+
+void Load::sliceIn_handler(FwIndexType portNum, U32 context) {
+    (void)portNum;
+    (void)context;
+    this->compute(m_sliceUs);
+    this->tlmWrite_Processed(m_processed);
+}
+
+void Load::burstIn_handler(FwIndexType portNum, U32 context) {
+    (void)portNum;
+    (void)context;
+    const U32 count = m_burstCount;
+    for (U32 i = 0; i < count; i++) {
+        this->ioOut_out(0, i);
+    }
+}
+
+void Load::ioIn_handler(FwIndexType portNum, U32 context) {
+    (void)portNum;
+    (void)context;
+    this->compute(m_burstUs);
+}
+
+void Load::dropOne() {
+    m_dropped++;
+    this->log_WARNING_HI_MessagesDropped(m_dropped);
+    this->tlmWrite_Dropped(m_dropped);
+}
+
+void Load::sliceIn_overflowHook(FwIndexType portNum, U32 context) {
+    (void)portNum;
+    (void)context;
+    this->dropOne();
+}
+
+void Load::ioIn_overflowHook(FwIndexType portNum, U32 context) {
+    (void)portNum;
+    (void)context;
+    this->dropOne();
+}
+
+void Load::SET_SLICE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 us) {
+    if (us > SLICE_MAX_US) {
+        this->log_WARNING_LO_LoadRejected(us, SLICE_MAX_US);
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
+        return;
+    }
+    m_sliceUs = us;
+    this->log_ACTIVITY_HI_LoadSet(us, m_burstCount, m_burstUs);
+    this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
+}
+
+void Load::SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 us) {
+    if (count > BURST_MAX || us > SLICE_MAX_US) {
+        const bool countBad = count > BURST_MAX;
+        this->log_WARNING_LO_LoadRejected(countBad ? count : us, countBad ? BURST_MAX : SLICE_MAX_US);
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
+        return;
+    }
+    m_burstCount = count;
+    m_burstUs = us;
+    this->log_ACTIVITY_HI_LoadSet(m_sliceUs, count, us);
+    this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
+}
+
+}  // namespace Kit

@@ -1,0 +1,53 @@
+module Kit {
+
+    @ Background load: the lowest-priority work of the deployment, set at run
+    @ time by command. Each slice message (100 Hz) runs one uninterruptible
+    @ computation of the commanded length; each burst tick (10 Hz) pushes a
+    @ burst of messages through the component's own queue, as a telemetry or
+    @ serial burst would. The same component is a cooperative task on
+    @ Os/Baremetal and a low-priority thread on Zephyr: where it breaks the
+    @ rate groups is what the load sweep measures.
+    active component Load {
+
+        @ Slice trigger (100 Hz rate group): one computation of the slice length
+        async input port sliceIn: Svc.Sched hook
+
+        @ Burst trigger (10 Hz rate group): queues the commanded burst
+        sync input port burstIn: Svc.Sched
+
+        @ The burst, looped back into this component's own queue
+        output port ioOut: Svc.Sched
+
+        @ One burst message: one computation of the burst message length
+        async input port ioIn: Svc.Sched hook
+
+        import Fw.Command
+        import Fw.Event
+        import Fw.Channel
+        time get port timeCaller
+
+        @ Set the uninterruptible computation per slice message
+        sync command SET_SLICE(
+            us: U32 @< Microseconds per slice, at most SLICE_MAX_US
+        ) opcode 0
+
+        @ Set the burst sent through the queue every 10 Hz cycle
+        sync command SET_BURST(
+            $count: U32 @< Messages per burst, at most BURST_MAX
+            us: U32 @< Microseconds of computation per message, at most SLICE_MAX_US
+        ) opcode 1
+
+        event LoadSet(sliceUs: U32, burst: U32, burstUs: U32) severity activity high id 0 format "Load: {} us per slice, bursts of {} x {} us"
+
+        event LoadRejected(value: U32, limit: U32) severity warning low id 1 format "Load setting {} is above its limit {}"
+
+        @ The queue was full: the load falls behind (an overrun of the lowest priority)
+        event MessagesDropped(total: U32) severity warning high id 2 format "Load queue full: {} messages dropped so far" throttle 5
+
+        @ Slice and burst messages processed
+        telemetry Processed: U32 id 0
+
+        @ Messages dropped on a full queue
+        telemetry Dropped: U32 id 1
+    }
+}

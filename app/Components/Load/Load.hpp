@@ -1,0 +1,56 @@
+// ======================================================================
+// \title  Load.hpp
+// \brief  Background load, set at run time by command
+// ======================================================================
+#ifndef KIT_LOAD_HPP
+#define KIT_LOAD_HPP
+
+#include "app/Components/Load/LoadComponentAc.hpp"
+
+namespace Kit {
+
+class Load final : public LoadComponentBase {
+  public:
+    //! Longest computation one message may be commanded to take: 20 ms, ten
+    //! times the longest the kit's sweep uses, still bounded
+    static constexpr U32 SLICE_MAX_US = 20000;
+    //! Most messages one burst may push (the queue holds fewer: a burst above
+    //! its depth is how an overrun of the load is provoked)
+    static constexpr U32 BURST_MAX = 32;
+
+    explicit Load(const char* const compName);
+    ~Load();
+
+    //! Messages processed (slices and burst messages)
+    U32 processed() const { return m_processed; }
+    //! Messages dropped on a full queue
+    U32 dropped() const { return m_dropped; }
+
+  private:
+    void sliceIn_handler(FwIndexType portNum, U32 context) override;
+    void sliceIn_overflowHook(FwIndexType portNum, U32 context) override;
+    void burstIn_handler(FwIndexType portNum, U32 context) override;
+    void ioIn_handler(FwIndexType portNum, U32 context) override;
+    void ioIn_overflowHook(FwIndexType portNum, U32 context) override;
+
+    void SET_SLICE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 us) override;
+    void SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 us) override;
+
+    //! A message the queue could not take
+    void dropOne();
+    //! One message's computation
+    void compute(U32 us);
+
+    // Written by commands (dispatcher context), read by the load's own
+    // context: aligned 32-bit words, so each read sees an old or a new value
+    volatile U32 m_sliceUs;
+    volatile U32 m_burstCount;
+    volatile U32 m_burstUs;
+    U32 m_processed;
+    U32 m_dropped;
+    U32 m_lcg;  //!< the computation's state, kept so it is not optimized away
+};
+
+}  // namespace Kit
+
+#endif

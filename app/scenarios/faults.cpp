@@ -1,0 +1,101 @@
+// ======================================================================
+// \title  faults.cpp
+// \brief  Faults the system must survive, injected at run time: malformed
+//         commands on the uplink, an overrun of the fastest rate group and
+//         an overrun of the background load's queue
+//
+// Each must be detected, reported as an F´ event, counted, and leave the
+// system running: every rate group still completes every cycle, and a
+// valid command after the faults is still answered OK.
+// ======================================================================
+#include "app/Top/GeneratedIds.hpp"
+#include "app/Top/KitTopology.hpp"
+#include "app/scenarios/Scenario.hpp"
+#include "app/src/Report.hpp"
+#include "app/src/Session.hpp"
+#include "app/src/Variant.hpp"
+
+#include <zephyr/sys/printk.h>
+
+namespace Kit {
+namespace Scenario {
+
+namespace {
+constexpr U32 RUN_TICKS = 2000;
+constexpr U32 OVERRUN_US = 1500;       // 1.5 periods of the 1 kHz group
+constexpr U32 OVERFLOW_BURST = 16;     // more than the load's queue holds
+constexpr FwIndexType FASTEST = 0;
+constexpr FwSizeType SCRIPT_FRAMES = 10;
+
+Uplink::Frame s_script[SCRIPT_FRAMES];
+
+// Built in its own frame, which is gone before the run starts: on baremetal
+// the main stack is every task's
+__attribute__((noinline)) void buildScript() {
+    const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
+    const U8 shortArgs[] = {0x00, 0x07};                          // an I32 needs 4 bytes
+    const U8 garbage[] = {0xDE, 0xAD, 0xBE, 0xEF, 0x01, 0x02};   // not a command packet
+    const U8 truncated[] = {0x00};                                // not even a descriptor
+    const Fw::CmdResponse format = Fw::CmdResponse::FORMAT_ERROR;
+    const Fw::CmdResponse invalid = Fw::CmdResponse::VALIDATION_ERROR;
+    // Into the static script frame by frame: a local array of frames would
+    // cost the main thread's stack (the sentinel caught that on rtos)
+    s_script[0] = command(2, 0x7FFF, Args());
+    s_script[0].expected = Fw::CmdResponse::INVALID_OPCODE;
+    s_script[1] = Uplink::commandFrame(3, setSetpoint, shortArgs, sizeof shortArgs);
+    s_script[1].expected = format;
+    // Too long: the I32 and two stray bytes
+    s_script[2] = command(4, setSetpoint, Args().add(static_cast<I32>(1000)).add(static_cast<U16>(7)));
+    s_script[2].expected = format;
+    s_script[3] = Uplink::rawFrame(5, garbage, sizeof garbage, invalid);
+    s_script[4] = Uplink::rawFrame(6, truncated, sizeof truncated, invalid);
+    s_script[5] = noOpFrame(7);
+    s_script[6] = command(8, faults.getIdBase() + FaultsIds::OVERRUN, Args().add(static_cast<U8>(FASTEST)).add(OVERRUN_US));
+    s_script[7] = command(9, load.getIdBase() + LoadIds::SET_BURST, Args().add(OVERFLOW_BURST).add(static_cast<U32>(0)));
+    s_script[8] = command(11, load.getIdBase() + LoadIds::SET_BURST, Args().add(static_cast<U32>(0)).add(static_cast<U32>(0)));
+    s_script[9] = noOpFrame(12);
+}
+
+}  // namespace
+
+bool run(const Context& context) {
+    buildScript();
+    uplink.play(s_script, SCRIPT_FRAMES);
+    Session::run(RUN_TICKS);
+
+    // The record: the rate groups (slips expected in the fastest only), the
+    // commands, and what each detection counted
+    (void)Report::rateGroups(RUN_TICKS);
+    const bool answered = Report::commands(s_script, SCRIPT_FRAMES);
+    const FwEventIdType dispBase = cmdDisp.getIdBase();
+    const U32 invalidEvents = downlink.eventCount(dispBase + CmdDispIds::INVALID_COMMAND);
+    const U32 malformedEvents = downlink.eventCount(dispBase + CmdDispIds::MALFORMED_COMMAND);
+    const U32 opcodeErrorEvents = downlink.eventCount(dispBase + CmdDispIds::OPCODE_ERROR);
+    const U32 slipEvents = downlink.eventCount(timing.getIdBase() + TimingIds::RATE_GROUP_SLIP);
+    const U32 dropEvents = downlink.eventCount(load.getIdBase() + LoadIds::MESSAGES_DROPPED);
+    bool cyclesOk = true;
+    U32 otherSlips = 0;
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        cyclesOk = cyclesOk && timing.record(i).cycles == expectedCycles(i, RUN_TICKS);
+        otherSlips += (i == FASTEST) ? 0 : timing.record(i).slips;
+    }
+    const U32 slips = timing.record(FASTEST).slips;
+    printk(
+        "KIT FAULTS invalid_opcode_events=%u malformed_events=%u opcode_error_events=%u slips=%u slip_events=%u "
+        "other_slips=%u load_dropped=%u drop_events=%u cycles_complete=%s\n",
+        static_cast<unsigned>(invalidEvents), static_cast<unsigned>(malformedEvents),
+        static_cast<unsigned>(opcodeErrorEvents), static_cast<unsigned>(slips), static_cast<unsigned>(slipEvents),
+        static_cast<unsigned>(otherSlips), static_cast<unsigned>(load.dropped()), static_cast<unsigned>(dropEvents),
+        cyclesOk ? "yes" : "no");
+    const bool heapOk = Report::heap(context.allocator);
+    Report::hash();
+    const bool downlinked = Report::downlinkAndTicks();
+    Variant::reportStacks();
+    // Every fault detected and reported, nothing lost
+    const bool detected = invalidEvents >= 1 && malformedEvents >= 2 && opcodeErrorEvents >= 2 && slips >= 1 &&
+                          slipEvents >= 1 && load.dropped() > 0 && dropEvents >= 1;
+    return answered && detected && otherSlips == 0 && cyclesOk && heapOk && downlinked;
+}
+
+}  // namespace Scenario
+}  // namespace Kit

@@ -1,0 +1,150 @@
+// ======================================================================
+// \title  load.cpp
+// \brief  The background-load sweep: where does each execution model break?
+//
+// The load component's work is stepped up by command (through the real
+// uplink and dispatcher), point by point, in one build and one boot. Each
+// point lets the new load settle, then measures a fresh segment and prints
+// one SWEEP line per rate group; at the end a BREAK line per axis and rate
+// group names the smallest load at which that group missed a deadline.
+// Two axes:
+//   slice  one uninterruptible computation per 100 Hz dispatch (a long,
+//          low-priority job: Betaflight's long serial task);
+//   burst  BURST_MESSAGES messages through the load's queue every 10 Hz
+//          cycle, each that long (a telemetry or serial burst).
+// ======================================================================
+#include "app/Top/GeneratedIds.hpp"
+#include "app/Top/KitTopology.hpp"
+#include "app/scenarios/Scenario.hpp"
+#include "app/src/Report.hpp"
+#include "app/src/Session.hpp"
+#include "app/src/Variant.hpp"
+
+#include <zephyr/sys/printk.h>
+
+namespace Kit {
+namespace Scenario {
+
+namespace {
+
+// A settle segment lets a new setting reach the load (the command is
+// dispatched in the first 10 Hz cycle) and the queues reach steady state;
+// the measured segment follows. Both last whole hyperperiods (asserted).
+constexpr U32 SETTLE_TICKS = 100;
+constexpr U32 MEASURE_TICKS = 200;
+constexpr U32 BURST_MESSAGES = 8;  // fits the load's queue (Queues.load)
+
+struct Axis {
+    const char* name;
+    U32 stepUs;
+    U32 points;  //!< loads 0, step, ..., (points - 1) x step
+    bool burst;
+};
+// Both reach twice the fastest period (2 ms at 1 kHz); the slice axis in
+// steps fine enough to place the knee within 100 us
+const Axis AXES[] = {
+    {"slice", 100, 21, false},
+    {"burst", 250, 9, true},
+};
+constexpr U32 NO_BREAK = 0xFFFFFFFFu;
+
+Uplink::Frame loadCommand(const Axis& axis, U32 us) {
+    const FwOpcodeType base = load.getIdBase();
+    if (axis.burst) {
+        return command(0, base + LoadIds::SET_BURST, Args().add(BURST_MESSAGES).add(us));
+    }
+    return command(0, base + LoadIds::SET_SLICE, Args().add(us));
+}
+
+Uplink::Frame idleCommand(const Axis& axis) {
+    return loadCommand(axis, 0);
+}
+
+// One measured point: a SWEEP line per rate group; broke[i] tells whether
+// group i missed a deadline
+void printPoint(const Axis& axis, U32 point, U32 us, U32 processed, U32 dropped, bool broke[]) {
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        const RateGroupRecord& rg = timing.record(i);
+        broke[i] = rg.slips > 0 || rg.lateStarts > 0;
+        printk(
+            "KIT SWEEP axis=%s point=%u load_us=%u burst=%u rg=%s hz=%u cycles=%u expected=%u slips=%u "
+            "late_starts=%u latency_p99=%u latency_max=%u jitter_p99=%u jitter_max=%u exec_max=%u load_runs=%u "
+            "load_dropped=%u\n",
+            axis.name, static_cast<unsigned>(point), static_cast<unsigned>(us),
+            static_cast<unsigned>(axis.burst ? BURST_MESSAGES : 0), rg.spec.name,
+            static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor), static_cast<unsigned>(rg.cycles),
+            static_cast<unsigned>(expectedCycles(i, MEASURE_TICKS)), static_cast<unsigned>(rg.slips),
+            static_cast<unsigned>(rg.lateStarts), static_cast<unsigned>(rg.latency.percentile(990)),
+            static_cast<unsigned>(rg.latency.max()), static_cast<unsigned>(rg.periodError.percentile(990)),
+            static_cast<unsigned>(rg.periodError.max()), static_cast<unsigned>(rg.exec.max()),
+            static_cast<unsigned>(processed), static_cast<unsigned>(dropped));
+    }
+}
+
+// Sweep one axis; false if a load command was not accepted
+bool sweep(const Axis& axis, U32 breakUs[]) {
+    bool commanded = true;
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        breakUs[i] = NO_BREAK;
+    }
+    for (U32 point = 0; point < axis.points; point++) {
+        const U32 us = point * axis.stepUs;
+        Uplink::Frame frame = loadCommand(axis, us);
+        uplink.play(&frame, 1);
+        Session::run(SETTLE_TICKS);
+        commanded = commanded && frame.asExpected();
+        Session::nextSegment();
+        const U32 processedBefore = load.processed();
+        const U32 droppedBefore = load.dropped();
+        Session::run(MEASURE_TICKS);
+        bool broke[RATE_GROUP_COUNT] = {};
+        printPoint(axis, point, us, load.processed() - processedBefore, load.dropped() - droppedBefore, broke);
+        for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+            if (broke[i] && breakUs[i] == NO_BREAK) {
+                breakUs[i] = us;
+            }
+        }
+        Session::nextSegment();
+    }
+    // Back to no load before the next axis
+    Uplink::Frame idle = idleCommand(axis);
+    uplink.play(&idle, 1);
+    Session::run(SETTLE_TICKS);
+    Session::nextSegment();
+    return commanded && idle.asExpected();
+}
+
+void printBreaks(const Axis& axis, const U32 breakUs[]) {
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        if (breakUs[i] == NO_BREAK) {
+            printk("KIT BREAK axis=%s rg=%s load_us=none\n", axis.name, timing.record(i).spec.name);
+        } else {
+            printk("KIT BREAK axis=%s rg=%s load_us=%u\n", axis.name, timing.record(i).spec.name,
+                   static_cast<unsigned>(breakUs[i]));
+        }
+    }
+}
+
+}  // namespace
+
+bool run(const Context& context) {
+    bool commanded = true;
+    U32 breakUs[FW_NUM_ARRAY_ELEMENTS(AXES)][RATE_GROUP_COUNT] = {};
+    for (FwSizeType a = 0; a < FW_NUM_ARRAY_ELEMENTS(AXES); a++) {
+        commanded = sweep(AXES[a], breakUs[a]) && commanded;
+    }
+    for (FwSizeType a = 0; a < FW_NUM_ARRAY_ELEMENTS(AXES); a++) {
+        printBreaks(AXES[a], breakUs[a]);
+    }
+    printk("KIT LOAD commands=%s processed=%u dropped=%u\n", commanded ? "OK" : "FAILED",
+           static_cast<unsigned>(load.processed()), static_cast<unsigned>(load.dropped()));
+    const bool heapOk = Report::heap(context.allocator);
+    Report::hash();
+    const bool downlinked = Report::downlinkAndTicks();
+    Variant::reportStacks();
+    // A queue the sweep overflowed would make its points meaningless
+    return commanded && heapOk && downlinked && load.dropped() == 0;
+}
+
+}  // namespace Scenario
+}  // namespace Kit

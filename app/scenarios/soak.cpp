@@ -1,0 +1,66 @@
+// ======================================================================
+// \title  soak.cpp
+// \brief  A long run in virtual time: CONFIG_KIT_RUN_TICKS ticks in
+//         checkpoints of SOAK_CHECKPOINT_TICKS, each with a NO_OP on the uplink
+//
+// Passes when no rate group ever slipped or missed a cycle, every NO_OP was
+// answered, nothing was allocated after init, and the stacks' high-water
+// marks stopped growing after the first checkpoint (flat: whatever the run
+// does in minute 10 it already did in minute 1).
+// ======================================================================
+#include "app/Top/KitTopology.hpp"
+#include "app/scenarios/Scenario.hpp"
+#include "app/src/HeapMonitor.hpp"
+#include "app/src/Report.hpp"
+#include "app/src/Session.hpp"
+#include "app/src/Variant.hpp"
+
+#include <zephyr/sys/printk.h>
+
+namespace Kit {
+namespace Scenario {
+
+namespace {
+// One minute of ticks per checkpoint
+constexpr U32 SOAK_CHECKPOINT_TICKS = 60u * CONFIG_KIT_TICK_HZ;
+static_assert(CONFIG_KIT_RUN_TICKS > 0 && (CONFIG_KIT_RUN_TICKS % SOAK_CHECKPOINT_TICKS) == 0,
+              "a soak lasts a whole number of one-minute checkpoints");
+}  // namespace
+
+bool run(const Context& context) {
+    const U32 checkpoints = CONFIG_KIT_RUN_TICKS / SOAK_CHECKPOINT_TICKS;
+    bool passed = true;
+    U32 firstStackUse = 0;
+    for (U32 minute = 1; minute <= checkpoints; minute++) {
+        Uplink::Frame noOp = noOpFrame(2);
+        uplink.play(&noOp, 1);
+        Session::run(SOAK_CHECKPOINT_TICKS);
+        U32 slips = 0;
+        bool cyclesOk = true;
+        for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+            slips += timing.record(i).slips + timing.record(i).lateStarts;
+            cyclesOk = cyclesOk && timing.record(i).cycles == expectedCycles(i, SOAK_CHECKPOINT_TICKS);
+        }
+        const U32 stackUse = Variant::stackUsedTotal();
+        firstStackUse = (minute == 1) ? stackUse : firstStackUse;
+        const bool flat = stackUse == firstStackUse;
+        printk(
+            "KIT SOAK minute=%u slips=%u cycles_complete=%s rg1kHz_latency_max=%u stack_used=%u stack_flat=%s "
+            "heap_bytes=%u heap_after_init=%u noop=%s\n",
+            static_cast<unsigned>(minute), static_cast<unsigned>(slips), cyclesOk ? "yes" : "no",
+            static_cast<unsigned>(timing.record(0).latency.max()), static_cast<unsigned>(stackUse),
+            flat ? "yes" : "no", static_cast<unsigned>(HeapMonitor::bytesRequested()),
+            static_cast<unsigned>(HeapMonitor::allocationsAfterInit()), noOp.asExpected() ? "OK" : "FAILED");
+        passed = passed && slips == 0 && cyclesOk && flat && noOp.asExpected() &&
+                 HeapMonitor::allocationsAfterInit() == 0;
+        Session::nextSegment();
+    }
+    const bool heapOk = Report::heap(context.allocator);
+    Report::hash();
+    const bool downlinked = Report::downlinkAndTicks();
+    Variant::reportStacks();
+    return passed && heapOk && downlinked;
+}
+
+}  // namespace Scenario
+}  // namespace Kit

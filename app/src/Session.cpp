@@ -1,0 +1,66 @@
+// ======================================================================
+// \title  Session.cpp
+// \brief  The shared main loop, segment by segment
+// ======================================================================
+#include "app/src/Session.hpp"
+#include "app/Components/Timing/TickClock.hpp"
+#include "app/Top/KitTopology.hpp"
+#include "app/src/TickControl.hpp"
+#include "app/src/Variant.hpp"
+
+namespace Kit {
+namespace Session {
+
+namespace {
+U32 gcd(U32 a, U32 b) {
+    // Euclid on dividers of at most a few thousand: a handful of steps
+    while (b != 0) {
+        const U32 rest = a % b;
+        a = b;
+        b = rest;
+    }
+    return a;
+}
+}  // namespace
+
+U32 hyperperiod() {
+    U32 lcm = 1;
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        lcm = (lcm / gcd(lcm, RATE_GROUPS[i].divisor)) * RATE_GROUPS[i].divisor;
+    }
+    return lcm;
+}
+
+void run(U32 ticks) {
+    const U32 periodUs = 1000000u / CONFIG_KIT_TICK_HZ;
+    U32 handled = 0;
+    TickControl::start(periodUs);
+    // A run of 0 ticks never ends (flight-like); otherwise the loop is
+    // bounded by the tick count.
+    while (ticks == 0 || handled < ticks) {
+        Variant::waitForTick(handled);
+        const U32 fired = TickClock::ticksFired();
+        // Hand over every tick that fired, in order: a main loop that fell
+        // behind shows up as latency and slips, never as lost cycles.
+        while (handled != fired && (ticks == 0 || handled < ticks)) {
+            timing.tick();
+            handled++;
+            Variant::afterTick();
+        }
+    }
+    TickControl::stop();
+    Variant::drain();
+}
+
+void nextSegment() {
+    timing.restart(hyperperiod());
+}
+
+U64 cyclesOf(U32 ticks) {
+    // From the tick count, not a counter difference: that wraps after 2^32
+    // cycles (358 s at 12 MHz)
+    return static_cast<U64>(ticks) * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
+}
+
+}  // namespace Session
+}  // namespace Kit
