@@ -40,7 +40,12 @@ set(KIT_VARIANT_DIR "${KIT_ROOT}/${KIT_VARIANT}")
 
 # --- Board ------------------------------------------------------------
 # Every board the kit runs on has a folder in boards/ (see docs/porting.md).
-if(DEFINED BOARD)
+# Zephyr splits "mps2/an385" into BOARD ("mps2") and BOARD_QUALIFIERS, and
+# F´'s sub-builds inherit the split BOARD: they read the target from the
+# cache entry the main configuration leaves (KIT_BOARD_TARGET) instead.
+if(DEFINED FPRIME_SUB_BUILD_TARGETS AND DEFINED KIT_BOARD_TARGET)
+    set(KIT_BOARD_SPEC "${KIT_BOARD_TARGET}")
+elseif(DEFINED BOARD)
     set(KIT_BOARD_SPEC "${BOARD}")
 elseif(DEFINED ENV{BOARD})
     set(KIT_BOARD_SPEC "$ENV{BOARD}")
@@ -62,6 +67,7 @@ if(DEFINED KIT_BOARD_SPEC)
             "To bring the kit to a new board: west kit new-board <board>, then docs/porting.md.")
     endif()
     set(KIT_BOARD_DIR "${KIT_ROOT}/boards/${KIT_BOARD}")
+    set(KIT_BOARD_TARGET "${KIT_BOARD_SPEC}" CACHE STRING "Board target of this kit build" FORCE)
     foreach(KIT_BOARD_FILE IN ITEMS kit.conf baremetal.conf rtos.conf Tables.fpp)
         if(NOT EXISTS "${KIT_BOARD_DIR}/${KIT_BOARD_FILE}")
             message(FATAL_ERROR "kit: boards/${KIT_BOARD}/${KIT_BOARD_FILE} is missing; every port has one "

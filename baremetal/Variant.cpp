@@ -8,10 +8,12 @@
 // first. Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
+#include "app/src/Fatal.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "baremetal/Os/TimedTask.hpp"
 
+#include <zephyr/fatal_types.h>
 #include <zephyr/kernel.h>
 #include <zephyr/sys/printk.h>
 #include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
@@ -56,7 +58,7 @@ void runPass() {
         if (bottom[i] != PAINT) {
             printk("KIT FATAL stack=main guard_word=%u address=0x%08x: stack overflow\n", static_cast<unsigned>(i),
                    static_cast<unsigned>(reinterpret_cast<uintptr_t>(&bottom[i])));
-            k_panic();
+            Fatal::halt(K_ERR_STACK_CHK_FAIL);
         }
     }
 }

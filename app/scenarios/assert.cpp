@@ -13,6 +13,7 @@
 #include "app/src/Fatal.hpp"
 #include "app/src/Session.hpp"
 
+#include <zephyr/fatal_types.h>
 #include <zephyr/sys/printk.h>
 
 namespace Kit {
@@ -29,7 +30,7 @@ bool run(const Context& context) {
         noOpFrame(2),
         command(4, faults.getIdBase() + FaultsIds::ASSERT, Args().add(ASSERT_CODE)),
     };
-    Fatal::expect();
+    Fatal::expect(K_ERR_KERNEL_PANIC);
     uplink.play(script, FW_NUM_ARRAY_ELEMENTS(script));
     Session::run(RUN_TICKS);
     printk("KIT ASSERTFAULT undetected: the run went on after an F´ assert\n");

@@ -14,6 +14,7 @@
 #include "app/src/Fatal.hpp"
 #include "app/src/Session.hpp"
 
+#include <zephyr/fatal_types.h>
 #include <zephyr/sys/printk.h>
 
 namespace Kit {
@@ -21,9 +22,9 @@ namespace Scenario {
 
 namespace {
 constexpr U32 RUN_TICKS = 1000;
-// More than any stack of the deployment holds (the largest is 2 KiB); the
-// recursion's frames carry some overhead on top, so the overflow passes the
-// guard by a few hundred bytes and stays well short of 2x
+// As much as the largest stack of the deployment holds (2 KiB): on top of
+// the handler's own depth and each frame's overhead, the recursion passes
+// the bottom of the stack by several hundred bytes
 constexpr U32 OVERFLOW_BYTES = 2048;
 }  // namespace
 
@@ -34,7 +35,7 @@ bool run(const Context& context) {
         command(4, faults.getIdBase() + FaultsIds::STACK_OVERFLOW, Args().add(OVERFLOW_BYTES)),
         noOpFrame(6),
     };
-    Fatal::expect();
+    Fatal::expect(K_ERR_STACK_CHK_FAIL);
     uplink.play(script, FW_NUM_ARRAY_ELEMENTS(script));
     Session::run(RUN_TICKS);
     printk("KIT STACKFAULT undetected: the run went on after a %u-byte overflow\n",

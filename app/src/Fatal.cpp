@@ -9,7 +9,8 @@
 // one line naming the reason and the execution context, then twister's
 // failure marker, so a run that dies fails at once instead of waiting for
 // twister's time-out, and halts. A fatal fault a scenario injected on
-// purpose (Fatal::expect) is reported without the marker.
+// purpose (Fatal::expect) is reported without the marker. The kit's own
+// detectors (the baremetal stack guard) end here too, through Fatal::halt.
 // ======================================================================
 #include "app/src/Fatal.hpp"
 #include "app/src/Variant.hpp"
@@ -20,7 +21,8 @@
 
 namespace {
 
-volatile bool s_expected = false;
+volatile bool s_expecting = false;
+volatile unsigned int s_expectedReason = 0;
 
 const char* reasonName(unsigned int reason) {
     switch (reason) {
@@ -41,18 +43,24 @@ const char* reasonName(unsigned int reason) {
 
 }  // namespace
 
-void Kit::Fatal::expect() {
-    s_expected = true;
+void Kit::Fatal::expect(unsigned int reason) {
+    s_expectedReason = reason;
+    s_expecting = true;
 }
 
-extern "C" void k_sys_fatal_error_handler(unsigned int reason, const struct arch_esf* esf) {
-    (void)esf;
+void Kit::Fatal::halt(unsigned int reason) {
+    const bool expected = s_expecting && reason == s_expectedReason;
     printk("KIT HALT reason=%s code=%u context=%s expected=%s\n", reasonName(reason), reason,
-           Kit::Variant::contextName(), s_expected ? "yes" : "no");
-    if (!s_expected) {
+           Kit::Variant::contextName(), expected ? "yes" : "no");
+    if (!expected) {
         printk("PROJECT EXECUTION FAILED\n");
     }
     // Nothing else may run: Zephyr's halt masks interrupts and spins until the
     // runner (twister, scripts/kit) stops QEMU.
     k_fatal_halt(reason);
+}
+
+extern "C" void k_sys_fatal_error_handler(unsigned int reason, const struct arch_esf* esf) {
+    (void)esf;
+    Kit::Fatal::halt(reason);
 }

@@ -18,19 +18,20 @@ module Kit {
   }
 
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
-  # stack and ignores them). From the thread analyzer's high-water marks
-  # ("KIT STACK" lines of the nominal and fault runs). Zephyr's thread pool
-  # has one slot size for all, so every task gets the largest need plus
-  # headroom for paths a run does not take: 1792 B, the
-  # CONFIG_DYNAMIC_THREAD_STACK_SIZE of rtos.conf beside this file.
+  # stack and ignores them). Zephyr's thread pool has one slot size for all:
+  # CONFIG_DYNAMIC_THREAD_STACK_SIZE of rtos.conf beside this file. A nominal
+  # run's high-water marks ("KIT STACK" lines) top out at 1324 B (cmdDisp),
+  # but an F´ assert in a command handler needs more than 1792 B of the
+  # dispatcher's stack: mps2/an385's MPU guard caught that overflow, which
+  # qemu_cortex_m3's stack sentinel (one word at the bottom) had missed.
   module Stacks {
-    constant rg1kHz = 1792
-    constant rg100Hz = 1792
-    constant rg10Hz = 1792
-    constant cmdDisp = 1792
-    constant events = 1792
-    constant tlmSend = 1792
-    constant load = 1792
+    constant rg1kHz = 2048
+    constant rg100Hz = 2048
+    constant rg10Hz = 2048
+    constant cmdDisp = 2048
+    constant events = 2048
+    constant tlmSend = 2048
+    constant load = 2048
   }
 
 }

@@ -25,6 +25,16 @@ TEST(Timing, SameSamplesSameHash) {
     tester.sameSamplesSameHash();
 }
 
+TEST(Timing, RestartEmptiesTheRecordsAndKeepsTheHash) {
+    Kit::TimingTester tester;
+    tester.restartEmptiesTheRecordsAndKeepsTheHash();
+}
+
+TEST(Timing, RestartRefusesASegmentOffTheHyperperiod) {
+    Kit::TimingTester tester;
+    tester.restartRefusesASegmentOffTheHyperperiod();
+}
+
 TEST(Timing, ProbeCostLeavesTheRunUntouched) {
     Kit::TimingTester tester;
     tester.probeCostLeavesTheRunUntouched();

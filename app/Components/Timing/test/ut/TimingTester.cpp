@@ -103,4 +103,33 @@ void TimingTester::probeCostLeavesTheRunUntouched() {
     EXPECT_EQ(component.record(0).cycles, 1u);
 }
 
+void TimingTester::restartEmptiesTheRecordsAndKeepsTheHash() {
+    for (U32 tick = 0; tick < 100; tick++) {
+        component.tick();
+    }
+    runFastCycle(0, 500, 100, 1);
+    runFastCycle(1, 500, 2 * PERIOD, 4);  // a slip in this segment
+    const U32 hashedSamples = component.sampleHash().samples();
+    component.restart(100);
+    EXPECT_EQ(component.ticksDriven(), 0u);
+    EXPECT_EQ(component.record(0).cycles, 0u);
+    EXPECT_EQ(component.record(0).slips, 0u);
+    EXPECT_EQ(component.record(0).latency.count(), 0u);
+    EXPECT_EQ(component.sampleHash().samples(), hashedSamples);
+    // The next segment numbers its ticks from zero again (the tick clock restarts)
+    FakeTickClock::reset();
+    runFastCycle(0, 600, 100, 1);
+    EXPECT_EQ(component.record(0).cycles, 1u);
+    EXPECT_EQ(component.record(0).slips, 0u);
+    EXPECT_EQ(component.record(0).latency.max(), 600u);
+}
+
+void TimingTester::restartRefusesASegmentOffTheHyperperiod() {
+    for (U32 tick = 0; tick < 150; tick++) {
+        component.tick();
+    }
+    // 150 ticks leave the 10 Hz group half way: its phase would not match
+    EXPECT_DEATH(component.restart(100), "");
+}
+
 }  // namespace Kit

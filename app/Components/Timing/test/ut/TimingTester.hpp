@@ -20,6 +20,8 @@ class TimingTester : public TimingGTestBase {
     void latencyAcrossTheCounterWrap();
     void sameSamplesSameHash();
     void probeCostLeavesTheRunUntouched();
+    void restartEmptiesTheRecordsAndKeepsTheHash();
+    void restartRefusesASegmentOffTheHyperperiod();
 
   private:
     void from_CycleOut_handler(FwIndexType portNum, Os::RawTime& cycleStart) override;

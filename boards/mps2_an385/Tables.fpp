@@ -1,0 +1,37 @@
+# The priority and stack table of the kit's deployment on mps2/an385 (started from the qemu_cortex_m3 table),
+# used by app/Top/instances.fpp.
+module Kit {
+
+  # Written once in F´'s convention: a higher number is more urgent. The
+  # baremetal TaskRunner runs tasks in this order within a pass; the RTOS
+  # variant maps it onto Zephyr's preemptive priorities (lower is more urgent)
+  # in rtos/Os/PriorityMap.hpp. The tick (the main loop) is above all of them
+  # in both. Rate groups by rate, then the services, then the background load.
+  module Priorities {
+    constant rg1kHz = 12
+    constant rg100Hz = 11
+    constant rg10Hz = 10
+    constant cmdDisp = 6
+    constant events = 5
+    constant tlmSend = 4
+    constant load = 2
+  }
+
+  # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
+  # stack and ignores them). Zephyr's thread pool has one slot size for all:
+  # CONFIG_DYNAMIC_THREAD_STACK_SIZE of rtos.conf beside this file. A nominal
+  # run's high-water marks ("KIT STACK" lines) top out at 1324 B (cmdDisp),
+  # but an F´ assert in a command handler needs more than 1792 B of the
+  # dispatcher's stack: mps2/an385's MPU guard caught that overflow, which
+  # qemu_cortex_m3's stack sentinel (one word at the bottom) had missed.
+  module Stacks {
+    constant rg1kHz = 2048
+    constant rg100Hz = 2048
+    constant rg10Hz = 2048
+    constant cmdDisp = 2048
+    constant events = 2048
+    constant tlmSend = 2048
+    constant load = 2048
+  }
+
+}
