@@ -15,38 +15,56 @@ from pathlib import Path
 from . import compare, conditions, modules, report, results, runner, testing
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
 
-DEFAULT_BOARD = "qemu_cortex_m3"
-
 
 def _say(message: str) -> None:
     print(f"[kit] {message}", flush=True)
 
 
-def cmd_compare(args: argparse.Namespace) -> int:
-    check_board(args.board)
-    check_provisioned()
-    out_dir = Path(args.output).resolve()
+def compare_board(board: str, out_dir: Path) -> tuple[Path, bool]:
+    """Build and run both variants (nominal and load sweep) on one board;
+    returns its results file and whether every run passed."""
     out_dir.mkdir(parents=True, exist_ok=True)
     found = []
+    passed: list[bool] = []
     for variant in VARIANTS:
-        _say(f"{variant}: building for {args.board} (west build -T app/kit.{variant})")
-        result = runner.build_and_run(variant, args.board, out_dir)
+        _say(f"{board} {variant}: building (west build -T app/kit.{variant})")
+        result = runner.build_and_run(variant, board, out_dir)
         fp = result.footprint
-        _say(f"{variant}: ran to its end line: {'PASS' if result.run.passed else 'FAIL'}; "
+        _say(f"{board} {variant}: ran to its end line: {'PASS' if result.run.passed else 'FAIL'}; "
              f"ROM {fp.rom} B, RAM {fp.ram} B")
-        _say(f"{variant}: ROM/RAM by module (west build -t rom_report / ram_report)")
+        _say(f"{board} {variant}: ROM/RAM by module (west build -t rom_report / ram_report)")
         rom = modules.breakdown(modules.report(result.build_dir, "rom"))
         ram = modules.breakdown(modules.report(result.build_dir, "ram"))
+        _say(f"{board} {variant}: background-load sweep (west build -T app/kit.{variant}.load)")
+        sweep = runner.build_and_run(variant, board, out_dir, "load")
+        _say(f"{board} {variant}: sweep ran to its end line: {'PASS' if sweep.run.passed else 'FAIL'}")
+        result.run.records.extend(r for r in sweep.run.records if r.kind in results.SWEEP_KINDS)
         found.append(compare.VariantData(variant, result.footprint, result.run, rom, ram,
                                          conditions.read(result.build_dir)))
+        passed.append(result.run.passed and sweep.run.passed)
     results_file = out_dir / "comparison.json"
     results_file.write_text(json.dumps(compare.as_json(found), indent=2) + "\n")
-    outcome = report.write_from_file(results_file, out_dir, None, report.Budget(), _say)
+    return results_file, all(passed)
+
+
+def cmd_compare(args: argparse.Namespace) -> int:
+    boards = args.board or testing.suite_boards()
+    for board in boards:
+        check_board(board)
+    check_provisioned()
+    out_dir = Path(args.output).resolve()
+    files: list[Path] = []
+    passed = True
+    for board in boards:
+        results_file, board_passed = compare_board(board, out_dir / check_board(board))
+        files.append(results_file)
+        passed = passed and board_passed
+    outcome = report.write_from_files(files, out_dir, None, report.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())
-    _say(f"results: {results_file}")
+    _say(f"results: {', '.join(str(f) for f in files)}")
     _say(f"report: {', '.join(str(f) for f in outcome.files[:4])}")
-    return 0 if all(r.run.passed for r in found) else 1
+    return 0 if passed else 1
 
 
 def _budget(args: argparse.Namespace) -> report.Budget:
@@ -71,16 +89,20 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 
 def cmd_test(args: argparse.Namespace) -> int:
-    check_board(args.board)
+    boards = args.board or testing.suite_boards()
+    for board in boards:
+        check_board(board)
     check_provisioned()
     log_dir = Path(args.output).resolve()
     total = testing.Tally()
     steps = []
     if not args.skip_twister:
-        steps.append(("twister suite under QEMU", lambda: testing.run_twister(args.board, log_dir)))
+        steps.append((f"twister suite under QEMU ({', '.join(boards)})", lambda: testing.run_twister(boards, log_dir)))
         steps.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
-        steps.append(("budget: twister's results against the baseline",
-                      lambda: testing.check_budget(args.board, log_dir, _budget(args), args.update_baseline)))
+        for board in boards:
+            steps.append((f"budget: {board} results against its baseline",
+                          lambda board=board: testing.check_budget(board, log_dir, _budget(args),
+                                                                   args.update_baseline)))
     if not args.skip_host:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:
@@ -98,7 +120,8 @@ def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(prog="kit", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = top.add_subparsers(dest="command", required=True)
     p = sub.add_parser("compare", help="build and run both variants, print the comparison")
-    p.add_argument("--board", default=DEFAULT_BOARD)
+    p.add_argument("--board", action="append",
+                   help="board to compare on (repeatable; default: every platform of the suite)")
     p.add_argument("--output", default=str(KIT_ROOT / "build" / "compare"), help="build folders, logs, results")
     p.set_defaults(func=cmd_compare)
     r = sub.add_parser("report", help="report of a results file (build/compare/comparison.json)")
@@ -107,7 +130,9 @@ def parser() -> argparse.ArgumentParser:
     r.add_argument("--output", help="folder for report.* (default: the results file's folder)")
     r.set_defaults(func=cmd_report)
     t = sub.add_parser("test", help="twister suite, host unit tests and tooling tests")
-    t.add_argument("--board", default=DEFAULT_BOARD)
+    t.add_argument("--board", action="append",
+                   help="board to run the suite on (repeatable; default: every platform of the suite, "
+                        "tests/deployment/testcase.yaml)")
     t.add_argument("--output", default=str(KIT_ROOT / "build" / "test-logs"), help="logs and reports")
     t.add_argument("--skip-twister", action="store_true")
     t.add_argument("--skip-host", action="store_true")

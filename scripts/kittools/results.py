@@ -57,31 +57,58 @@ def records_of(variant: dict[str, Any]) -> console.Run:
     return run
 
 
-def from_twister(twister_out: Path) -> dict[str, Any]:
-    """Results of a twister run of tests/deployment, in the results-file
-    schema: records from twister's recordings, footprint and modules from
-    the builds twister made."""
+def twister_build(twister_out: Path, platform: str, scenario: str) -> Path:
+    """The build folder twister made for a scenario on a platform."""
+    builds = [p.parent.parent for p in (twister_out / platform.replace("/", "_")).glob(f"**/{scenario}/zephyr/zephyr.elf")]
+    if len(builds) != 1:
+        raise KitError(f"expected one twister build of {scenario} on {platform}, found {len(builds)}")
+    return builds[0]
+
+
+# Kinds of record the load scenario adds to a variant's results (the sweep)
+SWEEP_KINDS = ("SWEEP", "BREAK")
+
+
+def _same_board(platform: str, board: str) -> bool:
+    """Twister names the platform with its qualifiers (qemu_cortex_m3/ti_lm3s6965)."""
+    return platform == board or platform.startswith(board + "/")
+
+
+def _recorded(suite: dict[str, Any]) -> console.Run:
+    run = console.Run()
+    for record in suite.get("recording") or []:
+        parsed = console.parse_line(f"KIT {record.get('kind', '')} {record.get('fields', '')}")
+        if parsed is not None:
+            run.records.append(parsed)
+    return run
+
+
+def from_twister(twister_out: Path, board: str) -> dict[str, Any]:
+    """Results of a twister run of tests/deployment on one board, in the
+    results-file schema: the nominal scenario's records (kit.deployment.*),
+    footprint and modules from its build, plus the sweep records of the load
+    scenario (kit.load.*) of the same variant when it ran."""
     report = twister_out / "twister.json"
     if not report.is_file():
         raise KitError(f"no twister report at {report}")
+    suites = [s for s in json.loads(report.read_text()).get("testsuites", [])
+              if _same_board(s.get("platform", ""), board) and s.get("recording")]
+    sweeps = {s["name"].rsplit(".", 1)[-1]: _recorded(s) for s in suites
+              if s["name"].rsplit("/", 1)[-1].startswith("kit.load.")}
     found: list[compare.VariantData] = []
-    for suite in json.loads(report.read_text()).get("testsuites", []):
+    for suite in suites:
         scenario = suite["name"].rsplit("/", 1)[-1]
-        if not scenario.startswith("kit.deployment.") or not suite.get("recording"):
+        if not scenario.startswith("kit.deployment."):
             continue
-        run = console.Run()
-        for record in suite["recording"]:
-            parsed = console.parse_line(f"KIT {record.get('kind', '')} {record.get('fields', '')}")
-            if parsed is not None:
-                run.records.append(parsed)
-        builds = [p.parent.parent for p in twister_out.glob(f"**/{scenario}/zephyr/zephyr.elf")]
-        if len(builds) != 1:
-            raise KitError(f"expected one twister build of {scenario}, found {len(builds)}")
-        build = builds[0]
+        run = _recorded(suite)
+        sweep = sweeps.get(run.variant)
+        if sweep is not None:
+            run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
+        build = twister_build(twister_out, suite["platform"], scenario)
         found.append(compare.VariantData(run.variant, measure(build), run,
                                          modules.breakdown(modules.report(build, "rom")),
                                          modules.breakdown(modules.report(build, "ram")), conditions.read(build)))
     if not found:
-        raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario")
+        raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario for {board}")
     found.sort(key=lambda d: d.variant)
     return compare.as_json(found)

@@ -33,11 +33,13 @@ def _tail(text: str, lines: int = 25) -> str:
     return "\n".join(text.splitlines()[-lines:])
 
 
-def build(variant: str, board: str, build_dir: Path, log: Path) -> None:
-    """`west build -b <board> -T app/kit.<variant>` into build_dir."""
+def build(variant: str, board: str, build_dir: Path, log: Path, scenario: str = "") -> None:
+    """`west build -b <board> -T app/kit.<variant>[.<scenario>]` into build_dir
+    (app/sample.yaml names the scenarios)."""
     check_variant(variant)
     check_board(board)
-    command = ["west", "build", "-b", board, "-d", str(build_dir), "-T", f"app/kit.{variant}"]
+    command = ["west", "build", "-b", board, "-d", str(build_dir), "-T",
+               f"app/kit.{variant}" + (f".{scenario}" if scenario else "")]
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as out:
         result = subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=out, stderr=subprocess.STDOUT)
@@ -114,9 +116,10 @@ def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
     return text
 
 
-def build_and_run(variant: str, board: str, out_dir: Path) -> VariantResult:
-    build_dir = out_dir / f"{check_board(board)}-{variant}"
-    build(variant, board, build_dir, out_dir / f"{variant}.build.log")
-    text = run(build_dir, out_dir / f"{variant}.console.log")
+def build_and_run(variant: str, board: str, out_dir: Path, scenario: str = "") -> VariantResult:
+    name = variant + (f".{scenario}" if scenario else "")
+    build_dir = out_dir / f"{check_board(board)}-{name}"
+    build(variant, board, build_dir, out_dir / f"{name}.build.log", scenario)
+    text = run(build_dir, out_dir / f"{name}.console.log")
     parsed = console.parse(text)
     return VariantResult(variant, board, build_dir, measure(build_dir), parsed, text)

@@ -10,9 +10,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import console, report, results, runner
-from .workspace import KIT_ROOT, KitError, environment
+from .workspace import KIT_ROOT, KitError, check_board, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
+SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
 TWISTER_OUT = KIT_ROOT / "twister-out"
 
 
@@ -46,9 +47,26 @@ def twister_tally(path: Path) -> Tally:
     return tally
 
 
-def run_twister(platform: str, log_dir: Path) -> Tally:
-    command = ["west", "twister", "-T", "tests", "-p", platform, "-j", "1", "--inline-logs",
+def suite_boards(suite: Path = SUITE) -> list[str]:
+    """The boards the suite runs on: its common platform_allow list."""
+    import yaml  # Zephyr's requirements bring PyYAML into the venv
+
+    try:
+        platforms = yaml.safe_load(suite.read_text())["common"]["platform_allow"]
+    except (OSError, KeyError, TypeError, yaml.YAMLError) as error:
+        raise KitError(f"{suite} names no platforms (common: platform_allow): {error}") from error
+    if not platforms:
+        raise KitError(f"{suite}: common: platform_allow is empty")
+    return [str(p) for p in platforms]
+
+
+def run_twister(platforms: list[str], log_dir: Path) -> Tally:
+    """The suite on every board, two builds or QEMU runs at a time (icount
+    timing does not depend on the host's load)."""
+    command = ["west", "twister", "-T", "tests", "-j", "2", "--inline-logs",
                "--outdir", str(TWISTER_OUT), "--overflow-as-errors"]
+    for platform in platforms:
+        command += ["-p", platform]
     code = _run(command, log_dir / "twister.log")
     tally = twister_tally(TWISTER_OUT / "twister.json")
     if code != 0 and tally.failed == 0:
@@ -56,32 +74,32 @@ def run_twister(platform: str, log_dir: Path) -> Tally:
     return tally
 
 
-def recorded_hashes(path: Path) -> dict[str, str]:
-    """Scenario name -> the sample hash twister recorded (KIT HASH line)."""
-    hashes: dict[str, str] = {}
+def recorded_hashes(path: Path) -> dict[tuple[str, str], str]:
+    """(platform, scenario) -> the sample hash twister recorded (KIT HASH line)."""
+    hashes: dict[tuple[str, str], str] = {}
     for suite in json.loads(path.read_text()).get("testsuites", []):
         for record in suite.get("recording") or []:
             if record.get("kind") == "HASH":
                 parsed = console.parse_line(f"KIT HASH {record.get('fields', '')}")
                 if parsed is not None and "fnv" in parsed.fields:
-                    hashes[suite["name"].rsplit("/", 1)[-1]] = parsed.fields["fnv"]
+                    hashes[(suite["platform"], suite["name"].rsplit("/", 1)[-1])] = parsed.fields["fnv"]
     return hashes
 
 
 def check_determinism(log_dir: Path) -> Tally:
-    """Run each twister-built binary once more under QEMU, with twister's own
-    QEMU flags: under icount the raw timing samples, and so their hash, must
-    be identical to what twister recorded."""
+    """Run each twister-built binary that ended normally once more under
+    QEMU, with twister's own QEMU flags: under icount the raw timing samples,
+    and so their hash, must be identical to what twister recorded."""
     tally = Tally()
-    for scenario, expected in sorted(recorded_hashes(TWISTER_OUT / "twister.json").items()):
-        builds = [p.parent.parent for p in TWISTER_OUT.glob(f"**/{scenario}/zephyr/zephyr.elf")]
-        if len(builds) != 1:
-            raise KitError(f"expected one twister build of {scenario}, found {len(builds)}")
-        text = runner.run(builds[0], log_dir / f"{scenario}.rerun.log")
+    for (platform, scenario), expected in sorted(recorded_hashes(TWISTER_OUT / "twister.json").items()):
+        if scenario.startswith("kit.soak."):
+            continue  # ten more virtual minutes per board; the soak checks itself
+        build = results.twister_build(TWISTER_OUT, platform, scenario)
+        text = runner.run(build, log_dir / f"{platform.replace('/', '_')}.{scenario}.rerun.log")
         again = console.parse(text).one("HASH").fields.get("fnv")
         same = again == expected
-        print(f"[kit]   {scenario}: sample hash {expected}, then {again}: {'identical' if same else 'DIFFERENT'}",
-              flush=True)
+        print(f"[kit]   {platform} {scenario}: sample hash {expected}, then {again}: "
+              f"{'identical' if same else 'DIFFERENT'}", flush=True)
         tally.add(Tally(passed=1) if same else Tally(failed=1))
     if tally.passed + tally.failed == 0:
         raise KitError("twister recorded no sample hash: nothing to compare")
@@ -92,24 +110,28 @@ BASELINES = KIT_ROOT / "tests" / "baselines"
 
 
 def check_budget(board: str, log_dir: Path, budget: "report.Budget", update_baseline: bool = False) -> Tally:
-    """Results of this twister run against the committed baseline of the
-    board (tests/baselines/<board>.json): ROM, RAM, p99 and slips budgets.
-    update_baseline: make this run the baseline instead (review the diff)."""
-    baseline_path = BASELINES / f"{board.split('/', 1)[0]}.json"
-    data = results.from_twister(TWISTER_OUT)
-    current = log_dir / "results.json"
+    """Results of this twister run on `board` against its committed baseline
+    (tests/baselines/<board folder>.json): ROM, RAM, p99 and slips budgets.
+    update_baseline: make this run the baseline instead (review the diff).
+    Writes <log_dir>/<board folder>/results.json and its report."""
+    folder = check_board(board)
+    baseline_path = BASELINES / f"{folder}.json"
+    data = results.from_twister(TWISTER_OUT, board)
+    out_dir = log_dir / folder
+    out_dir.mkdir(parents=True, exist_ok=True)
+    current = out_dir / "results.json"
     current.write_text(json.dumps(data, indent=2) + "\n")
     if update_baseline:
         baseline_path.parent.mkdir(parents=True, exist_ok=True)
         baseline_path.write_text(json.dumps(data, indent=2) + "\n")
         print(f"[kit]   baseline written: {baseline_path}", flush=True)
     if not baseline_path.is_file():
-        raise KitError(f"no baseline for {board} ({baseline_path}): run `scripts/kit test --update-baseline` "
-                       "once and commit the file")
-    outcome = report.write(data, log_dir / "report", results.load(baseline_path), budget)
+        raise KitError(f"no baseline for {board} ({baseline_path}): run `scripts/kit test --board {board} "
+                       "--update-baseline` once and commit the file")
+    outcome = report.write(data, out_dir / "report", results.load(baseline_path), budget)
     for violation in outcome.violations:
         print(f"[kit]   budget: {violation}", flush=True)
-    print(f"[kit]   report against {baseline_path.name}: {log_dir / 'report' / 'report.html'}", flush=True)
+    print(f"[kit]   {board}: report against {baseline_path.name}: {out_dir / 'report' / 'report.html'}", flush=True)
     return Tally(passed=1) if not outcome.violations else Tally(failed=1)
 
 

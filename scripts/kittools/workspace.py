@@ -21,15 +21,22 @@ def ported_boards() -> list[str]:
     return sorted(p.name for p in BOARDS.iterdir() if p.is_dir())
 
 
+def board_dir_name(target: str) -> str:
+    """A board target as its kit folder is named: '/' becomes '_' (mps2/an385: mps2_an385)."""
+    return target.replace("/", "_")
+
+
 def check_board(board: str) -> str:
-    """The board's kit folder name; KitError if the kit has no port for it."""
-    name = board.split("/", 1)[0]
-    if not (BOARDS / name).is_dir():
-        raise KitError(
-            f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards())}. "
-            "To bring the kit to a new board, see docs/porting.md."
-        )
-    return name
+    """The board's kit folder name; KitError if the kit has no port for it.
+    The folder is the target as given with '/' as '_'; a folder named after
+    the board alone covers all its qualifiers (app/kit.cmake: the same rule)."""
+    for name in (board_dir_name(board), board.split("/", 1)[0]):
+        if (BOARDS / name).is_dir():
+            return name
+    raise KitError(
+        f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards())}. "
+        "To bring the kit to a new board, see docs/porting.md (kit new-board scaffolds one)."
+    )
 
 
 def check_variant(variant: str) -> None:
@@ -53,6 +60,10 @@ def environment() -> dict[str, str]:
     env["PATH"] = f"{venv_bin}{os.pathsep}{env.get('PATH', '')}"
     env["VIRTUAL_ENV"] = str(KIT_ROOT / ".venv")
     env["ZEPHYR_BASE"] = str(DEPS / "zephyr")
+    # ccache hits across build folders (every twister scenario has its own)
+    # only when paths under the clone are hashed relative to it
+    env.setdefault("CCACHE_BASEDIR", str(KIT_ROOT))
+    env.setdefault("CCACHE_NOHASHDIR", "1")
     if "ZEPHYR_TOOLCHAIN_VARIANT" not in env and "ZEPHYR_SDK_INSTALL_DIR" not in env:
         gcc = shutil.which("arm-none-eabi-gcc", path=env["PATH"])
         if gcc is None:
