@@ -8,9 +8,9 @@
 // first. Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
-#include "app/src/Fatal.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
+#include "app/src/Fatal.hpp"
 #include "baremetal/Os/TimedTask.hpp"
 
 #include <zephyr/fatal_types.h>

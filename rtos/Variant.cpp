@@ -62,9 +62,9 @@ void printCpu(const struct k_thread* thread, void* context) {
     // A run is a scheduling window: from being switched in to switched out
     const U64 runs = stats.average_cycles == 0 ? 0 : stats.total_cycles / stats.average_cycles;
     const U32 share = runCycles == 0 ? 0 : static_cast<U32>((stats.total_cycles * 1000u) / runCycles);
-    printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", threadName(thread),
-           static_cast<unsigned>(runs), static_cast<unsigned>(stats.average_cycles),
-           static_cast<unsigned>(stats.peak_cycles), static_cast<unsigned>(share));
+    printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", threadName(thread), static_cast<unsigned>(runs),
+           static_cast<unsigned>(stats.average_cycles), static_cast<unsigned>(stats.peak_cycles),
+           static_cast<unsigned>(share));
 }
 }  // namespace
 

@@ -18,7 +18,7 @@ namespace Kit {
 namespace Scenario {
 
 struct Context {
-    U32 probeCost;                      //!< the timing probe's cycles per rate-group cycle
+    U32 probeCost;                       //!< the timing probe's cycles per rate-group cycle
     const CountingAllocator& allocator;  //!< F´'s allocator
 };
 

@@ -22,8 +22,8 @@ namespace Scenario {
 
 namespace {
 constexpr U32 RUN_TICKS = 2000;
-constexpr U32 OVERRUN_US = 1500;       // 1.5 periods of the 1 kHz group
-constexpr U32 OVERFLOW_BURST = 16;     // more than the load's queue holds
+constexpr U32 OVERRUN_US = 1500;    // 1.5 periods of the 1 kHz group
+constexpr U32 OVERFLOW_BURST = 16;  // more than the load's queue holds
 constexpr FwIndexType FASTEST = 0;
 constexpr FwSizeType SCRIPT_FRAMES = 10;
 
@@ -33,9 +33,9 @@ Uplink::Frame s_script[SCRIPT_FRAMES];
 // the main stack is every task's
 __attribute__((noinline)) void buildScript() {
     const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
-    const U8 shortArgs[] = {0x00, 0x07};                          // an I32 needs 4 bytes
-    const U8 garbage[] = {0xDE, 0xAD, 0xBE, 0xEF, 0x01, 0x02};   // not a command packet
-    const U8 truncated[] = {0x00};                                // not even a descriptor
+    const U8 shortArgs[] = {0x00, 0x07};                        // an I32 needs 4 bytes
+    const U8 garbage[] = {0xDE, 0xAD, 0xBE, 0xEF, 0x01, 0x02};  // not a command packet
+    const U8 truncated[] = {0x00};                              // not even a descriptor
     const Fw::CmdResponse format = Fw::CmdResponse::FORMAT_ERROR;
     const Fw::CmdResponse invalid = Fw::CmdResponse::VALIDATION_ERROR;
     // Into the static script frame by frame: a local array of frames would
@@ -50,9 +50,12 @@ __attribute__((noinline)) void buildScript() {
     s_script[3] = Uplink::rawFrame(5, garbage, sizeof garbage, invalid);
     s_script[4] = Uplink::rawFrame(6, truncated, sizeof truncated, invalid);
     s_script[5] = noOpFrame(7);
-    s_script[6] = command(8, faults.getIdBase() + FaultsIds::OVERRUN, Args().add(static_cast<U8>(FASTEST)).add(OVERRUN_US));
-    s_script[7] = command(9, load.getIdBase() + LoadIds::SET_BURST, Args().add(OVERFLOW_BURST).add(static_cast<U32>(0)));
-    s_script[8] = command(11, load.getIdBase() + LoadIds::SET_BURST, Args().add(static_cast<U32>(0)).add(static_cast<U32>(0)));
+    s_script[6] =
+        command(8, faults.getIdBase() + FaultsIds::OVERRUN, Args().add(static_cast<U8>(FASTEST)).add(OVERRUN_US));
+    s_script[7] =
+        command(9, load.getIdBase() + LoadIds::SET_BURST, Args().add(OVERFLOW_BURST).add(static_cast<U32>(0)));
+    s_script[8] =
+        command(11, load.getIdBase() + LoadIds::SET_BURST, Args().add(static_cast<U32>(0)).add(static_cast<U32>(0)));
     s_script[9] = noOpFrame(12);
 }
 

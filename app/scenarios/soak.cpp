@@ -48,11 +48,11 @@ bool run(const Context& context) {
             "KIT SOAK minute=%u slips=%u cycles_complete=%s rg1kHz_latency_max=%u stack_used=%u stack_flat=%s "
             "heap_bytes=%u heap_after_init=%u noop=%s\n",
             static_cast<unsigned>(minute), static_cast<unsigned>(slips), cyclesOk ? "yes" : "no",
-            static_cast<unsigned>(timing.record(0).latency.max()), static_cast<unsigned>(stackUse),
-            flat ? "yes" : "no", static_cast<unsigned>(HeapMonitor::bytesRequested()),
+            static_cast<unsigned>(timing.record(0).latency.max()), static_cast<unsigned>(stackUse), flat ? "yes" : "no",
+            static_cast<unsigned>(HeapMonitor::bytesRequested()),
             static_cast<unsigned>(HeapMonitor::allocationsAfterInit()), noOp.asExpected() ? "OK" : "FAILED");
-        passed = passed && slips == 0 && cyclesOk && flat && noOp.asExpected() &&
-                 HeapMonitor::allocationsAfterInit() == 0;
+        passed =
+            passed && slips == 0 && cyclesOk && flat && noOp.asExpected() && HeapMonitor::allocationsAfterInit() == 0;
         Session::nextSegment();
     }
     const bool heapOk = Report::heap(context.allocator);

@@ -94,7 +94,6 @@ bool rateGroups(U32 ticks) {
     return passed;
 }
 
-
 void banner(const char* variant) {
     printk(
         "KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "

@@ -59,8 +59,8 @@ class Uplink final : public UplinkComponentBase {
 
     Frame* m_frames;
     FwSizeType m_count;
-    U32 m_cycle;       //!< 10 Hz cycles since boot
-    U32 m_playStart;   //!< m_cycle when play() was called
+    U32 m_cycle;      //!< 10 Hz cycles since boot
+    U32 m_playStart;  //!< m_cycle when play() was called
     U32 m_sent;
     U32 m_rejected;
 };
