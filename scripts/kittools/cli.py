@@ -72,10 +72,10 @@ def _budget(args: argparse.Namespace) -> report.Budget:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    source = Path(args.results).resolve()
-    out_dir = Path(args.output).resolve() if args.output else source.parent
+    sources = [Path(r).resolve() for r in args.results]
+    out_dir = Path(args.output).resolve() if args.output else sources[0].parent
     baseline = Path(args.baseline).resolve() if args.baseline else None
-    outcome = report.write_from_file(source, out_dir, baseline, _budget(args), _say)
+    outcome = report.write_from_files(sources, out_dir, baseline, _budget(args), _say)
     for path in outcome.files[:4]:
         _say(f"written: {path}")
     if baseline is not None:
@@ -124,9 +124,10 @@ def parser() -> argparse.ArgumentParser:
                    help="board to compare on (repeatable; default: every platform of the suite)")
     p.add_argument("--output", default=str(KIT_ROOT / "build" / "compare"), help="build folders, logs, results")
     p.set_defaults(func=cmd_compare)
-    r = sub.add_parser("report", help="report of a results file (build/compare/comparison.json)")
-    r.add_argument("results", help="results file (JSON, docs/results.md)")
-    r.add_argument("--baseline", help="results file to diff against; with it, a budget check sets the exit code")
+    r = sub.add_parser("report", help="report of results files (build/compare/<board>/comparison.json)")
+    r.add_argument("results", nargs="+", help="results files (JSON, docs/results.md), one per board")
+    r.add_argument("--baseline", help="results file to diff the first against; with it, a budget check sets the "
+                                      "exit code")
     r.add_argument("--output", help="folder for report.* (default: the results file's folder)")
     r.set_defaults(func=cmd_report)
     t = sub.add_parser("test", help="twister suite, host unit tests and tooling tests")

@@ -18,7 +18,7 @@ matplotlib.use("Agg")  # no display: files only
 import matplotlib.pyplot as plt  # noqa: E402
 from jinja2 import Environment, FileSystemLoader, select_autoescape  # noqa: E402
 
-from . import results  # noqa: E402
+from . import results, sweep  # noqa: E402
 
 CAVEAT = ("Times are QEMU virtual time (icount): exact and repeatable, they compare software paths; "
           "they are not hardware latencies.")
@@ -265,9 +265,161 @@ def baseline_diff(data: dict[str, Any], baseline: dict[str, Any], budget: Budget
                  ["variant", "metric", "baseline", "now", "delta", "change", "budget"], rows), violations
 
 
+def _sweeps(data: dict[str, Any]) -> dict[str, sweep.Sweep]:
+    found = {}
+    for v in _variants(data):
+        parsed = sweep.of_records(data["variants"][v]["records"])
+        if parsed is not None:
+            found[v] = parsed
+    return found
+
+
+def _fastest_period_us(data: dict[str, Any]) -> float:
+    """Period of the fastest rate group, in µs (the tick's)."""
+    tick_hz = float(data["conditions"].get("tick_hz", 0) or 0)
+    return 1e6 / tick_hz if tick_hz > 0 else 0.0
+
+
+def _break_text(value: int | None, max_us: int) -> str:
+    return f"{value} µs" if value is not None else f"none up to {max_us} µs"
+
+
+def breaking_points_table(sweeps: dict[str, sweep.Sweep]) -> Table:
+    names = sorted(sweeps)
+    first = sweeps[names[0]]
+    rows = []
+    for axis in first.axes():
+        for rg in first.rate_groups():
+            rows.append([axis, rg] + [_break_text(sweeps[v].breaking_point(axis, rg), sweeps[v].max_load(axis))
+                                      for v in names])
+    return Table("Background load: breaking points (smallest load at which a rate group missed a deadline)",
+                 ["load axis", "rate group"] + names, rows)
+
+
+def sweep_table(sweeps: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> Table:
+    names = sorted(sweeps)
+    fastest = sweeps[names[0]].rate_groups()[0]
+    loads = sorted({p.load_us for v in names for p in sweeps[v].points if p.axis == axis})
+    rows = []
+    for load in loads:
+        row: list[Any] = [load]
+        for v in names:
+            at = {p.rate_group: p for p in sweeps[v].points if p.axis == axis and p.load_us == load}
+            point = at.get(fastest)
+            row += [point.latency_p99 * 1e6 / cycles_hz if point else "",
+                    point.latency_max * 1e6 / cycles_hz if point else "",
+                    ", ".join(rg for rg, p in at.items() if p.missed) or "-"]
+        rows.append(row)
+    columns = ["load (µs)"]
+    for v in names:
+        columns += [f"{v} {fastest} p99 (µs)", f"{v} {fastest} max (µs)", f"{v} missed deadlines"]
+    return Table(f"Background load sweep, axis '{axis}'", columns, rows)
+
+
+def sweep_chart(sweeps: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> Image:
+    names = sorted(sweeps)
+    rate_groups = sweeps[names[0]].rate_groups()
+
+    def draw(figure: Any) -> None:
+        for index, rg in enumerate(rate_groups):
+            axes = figure.add_subplot(1, len(rate_groups), index + 1)
+            for v in names:
+                points = sweeps[v].series(axis, rg)
+                x = [p.load_us for p in points]
+                (line,) = axes.plot(x, [p.latency_p99 * 1e6 / cycles_hz for p in points], "-o", markersize=3,
+                                    label=f"{v} p99")
+                axes.plot(x, [p.latency_max * 1e6 / cycles_hz for p in points], "--", color=line.get_color(),
+                          label=f"{v} max")
+                missed = [p for p in points if p.missed]
+                if missed:
+                    axes.plot([p.load_us for p in missed], [p.latency_max * 1e6 / cycles_hz for p in missed], "x",
+                              color="red", markersize=7, label=f"{v} missed deadline")
+                broke = sweeps[v].breaking_point(axis, rg)
+                if broke is not None:
+                    axes.axvline(broke, linestyle=":", color=line.get_color())
+            axes.set_title(f"{rg}: dispatch latency vs load ({axis})", fontsize=9)
+            axes.set_xlabel("load (µs)", fontsize=8)
+            axes.set_ylabel("latency (µs)", fontsize=8)
+            low, high = axes.get_ylim()
+            if low > 0 and high / low > 10:  # log only where the range calls for it
+                axes.set_yscale("log")
+            axes.legend(fontsize=7)
+
+    return Image(f"Latency versus background load, axis '{axis}'", _png(draw, (4.2 * len(rate_groups), 3.4)))
+
+
+def sweep_guidance(data: dict[str, Any], sweeps: dict[str, sweep.Sweep]) -> Text:
+    """What the sweep says, generated from its points."""
+    cycles_hz = float(data["conditions"].get("cycles_hz", 0) or 0)
+    period = _fastest_period_us(data)
+    lines: list[str] = []
+    for v in sorted(sweeps):
+        sw = sweeps[v]
+        fastest = sw.rate_groups()[0]
+        for axis in sw.axes():
+            breaks = [(b, rg) for rg in sw.rate_groups() if (b := sw.breaking_point(axis, rg)) is not None]
+            series = sw.series(axis, fastest)
+            p99 = [p.latency_p99 * 1e6 / cycles_hz for p in series]
+            # The knee: the first load at which the fastest group's p99 is 10% over its zero-load value
+            knee = next((p.load_us for q, p in zip(p99, series) if q > p99[0] * 1.1), None)
+            grows = f"; its p99 latency starts to grow at {knee} µs" if knee is not None else ""
+            if breaks:
+                load, rg = min(breaks)
+                before = [q for q, p in zip(p99, series) if p.load_us < load]
+                grow = (f", from {before[0]:.1f} µs to {before[-1]:.1f} µs just below the break"
+                        if before and knee is not None else "")
+                share = f" ({load / period * 100:.0f}% of the {period:.0f} µs period)" if period else ""
+                lines.append(f"{v}, {axis} load: {rg} misses deadlines from {load} µs{share}{grows}{grow}.")
+            else:
+                most = sw.max_load(axis)
+                times = f" ({most / period:.1f}x the fastest period)" if period else ""
+                lines.append(f"{v}, {axis} load: no rate group missed a deadline up to {most} µs{times}; "
+                             f"{fastest} p99 latency stayed within {min(p99):.1f}-{max(p99):.1f} µs{grows}.")
+        lines += [f"{v}: inconsistent sweep record: {text}" for text in sw.inconsistencies()]
+    names = _variants(data)
+    if len(names) == 2:
+        a, b = names
+        costs = []
+        for label, key in (("ROM", "ROM (bytes)"), ("static RAM", "RAM, static (bytes)"),
+                           ("reserved stack", "stacks reserved (bytes)")):
+            va, vb = _metric(data, a, key), _metric(data, b, key)
+            if va is not None and vb is not None:
+                costs.append(f"{label} {vb - va:+,.0f} B")
+        switches = _switches_per_second(data, b)
+        if switches is not None:
+            costs.append(f"{switches:,.0f} context switches per second")
+        if costs:
+            lines.append(f"What {b} costs against {a} at zero load: {', '.join(costs)}.")
+    return Text("Background load: what the sweep says", lines)
+
+
+def _switches_per_second(data: dict[str, Any], variant: str) -> float | None:
+    """Scheduling windows per second of the threads (KIT CPU runs, idle left out)."""
+    records = [r for r in data["variants"][variant]["records"] if r.get("kind") == "CPU" and r.get("name") != "idle"]
+    ticks = float(data["conditions"].get("run_ticks", 0) or 0)
+    tick_hz = float(data["conditions"].get("tick_hz", 0) or 0)
+    # Only threads switch context: baremetal's CPU records count cooperative
+    # slices of one loop, not switches
+    if not records or ticks <= 0 or tick_hz <= 0 or variant != "rtos":
+        return None
+    return sum(int(r["runs"]) for r in records) / (ticks / tick_hz)
+
+
+def sweep_sections(data: dict[str, Any]) -> list[Section]:
+    sweeps = _sweeps(data)
+    cycles_hz = float(data["conditions"].get("cycles_hz", 0) or 0)
+    if not sweeps or cycles_hz <= 0:
+        return []
+    sections: list[Section] = [breaking_points_table(sweeps), sweep_guidance(data, sweeps)]
+    for axis in sweeps[sorted(sweeps)[0]].axes():
+        sections += [sweep_chart(sweeps, cycles_hz, axis), sweep_table(sweeps, cycles_hz, axis)]
+    return sections
+
+
 def build_sections(data: dict[str, Any], baseline: dict[str, Any] | None, budget: Budget) -> tuple[list[Section], list[str]]:
     names = _variants(data)
     sections: list[Section] = [conditions_text(data), findings(data), metrics_table(data)]
+    sections += sweep_sections(data)
     violations: list[str] = []
     if baseline is not None:
         diff, violations = baseline_diff(data, baseline, budget)
@@ -334,12 +486,73 @@ def to_html(sections: list[Section]) -> str:
     return env.get_template("report.html.j2").render(items=items)
 
 
+def _board(data: dict[str, Any]) -> str:
+    return str(data["conditions"].get("board", "?"))
+
+
+BOARD_METRICS = ("ROM (bytes)", "RAM, static (bytes)", "stacks reserved (bytes)", "stacks used, peak (bytes)",
+                 "heap, F´ allocator peak (bytes)")
+
+
+def boards_table(datas: list[dict[str, Any]]) -> Table:
+    """The key metrics of every board and variant, side by side."""
+    columns = [(d, v) for d in datas for v in _variants(d)]
+    keys = list(BOARD_METRICS)
+    for d in datas:
+        for v in _variants(d):
+            keys += [k for k in d["variants"][v]["metrics"] if (k.endswith("latency p99 (us)") or k.endswith(" slips"))
+                     and k not in keys]
+    rows: list[list[Any]] = []
+    for key in keys:
+        rows.append([key] + [_metric(d, v, key) if _metric(d, v, key) is not None else "" for d, v in columns])
+    sweeps = [(_sweeps(d).get(v), d) for d, v in columns]
+    axes = list(dict.fromkeys(a for sw, _ in sweeps if sw for a in sw.axes()))
+    for axis in axes:
+        for rg in next(sw for sw, _ in sweeps if sw).rate_groups():
+            rows.append([f"breaking point, {axis} load, {rg}"] +
+                        [_break_text(sw.breaking_point(axis, rg), sw.max_load(axis)) if sw else "" for sw, _ in sweeps])
+    return Table("Boards side by side", ["metric"] + [f"{_board(d)} {v}" for d, v in columns], rows)
+
+
+def boards_chart(datas: list[dict[str, Any]]) -> Image:
+    columns = [(d, v) for d in datas for v in _variants(d)]
+
+    def draw(figure: Any) -> None:
+        for index, (label, key) in enumerate((("ROM", "ROM (bytes)"), ("static RAM", "RAM, static (bytes)"))):
+            axes = figure.add_subplot(1, 2, index + 1)
+            values = [(_metric(d, v, key) or 0) / 1024 for d, v in columns]
+            axes.barh(range(len(columns)), values)
+            axes.set_yticks(range(len(columns)))
+            axes.set_yticklabels([f"{_board(d)} {v}" if index == 0 else "" for d, v in columns], fontsize=8)
+            axes.invert_yaxis()
+            axes.set_xlabel(f"{label} (KiB)")
+
+    return Image("ROM and RAM per board and variant", _png(draw, (11, 0.5 * len(columns) + 1.5)))
+
+
 def write(data: dict[str, Any], out_dir: Path, baseline: dict[str, Any] | None = None,
           budget: Budget | None = None, say: Callable[[str], None] = lambda _m: None) -> Outcome:
+    """The report of one board's results."""
+    return write_boards([data], out_dir, baseline, budget, say)
+
+
+def write_boards(datas: list[dict[str, Any]], out_dir: Path, baseline: dict[str, Any] | None = None,
+                 budget: Budget | None = None, say: Callable[[str], None] = lambda _m: None) -> Outcome:
+    """The report of one or more boards' results; the baseline (budget check)
+    applies to the first."""
     budget = budget or Budget()
     out_dir.mkdir(parents=True, exist_ok=True)
     say("report: building tables and plots")
-    sections, violations = build_sections(data, baseline, budget)
+    several = len(datas) > 1
+    sections: list[Section] = [boards_table(datas), boards_chart(datas)] if several else []
+    violations: list[str] = []
+    for index, data in enumerate(datas):
+        board_sections, board_violations = build_sections(data, baseline if index == 0 else None, budget)
+        if several:
+            for section in board_sections:
+                section.title = f"{_board(data)}: {section.title}"
+        sections += board_sections
+        violations += board_violations
     outcome = Outcome(violations=violations)
     image_names: dict[int, str] = {}
     for index, section in enumerate(sections):
@@ -351,20 +564,30 @@ def write(data: dict[str, Any], out_dir: Path, baseline: dict[str, Any] | None =
     say("report: writing Markdown, HTML, JSON and CSV")
     (out_dir / "report.md").write_text(to_markdown(sections, image_names))
     (out_dir / "report.html").write_text(to_html(sections))
-    (out_dir / "report.json").write_text(json.dumps({**data, "budget_violations": violations}, indent=2) + "\n")
+    summary = {**datas[0]} if not several else {"boards": datas}
+    (out_dir / "report.json").write_text(json.dumps({**summary, "budget_violations": violations}, indent=2) + "\n")
     with (out_dir / "report.csv").open("w", newline="") as stream:
         writer = csv.writer(stream)
         writer.writerow(["variant", "metric", "value"])
-        for v in _variants(data):
-            for key, value in data["variants"][v]["metrics"].items():
-                writer.writerow([v, key, value])
+        for data in datas:
+            for v in _variants(data):
+                name = f"{_board(data)} {v}" if several else v
+                for key, value in data["variants"][v]["metrics"].items():
+                    writer.writerow([name, key, value])
+                sw = _sweeps(data).get(v)
+                for point in sw.points if sw else []:
+                    writer.writerow([name, f"sweep {point.axis} {point.rate_group} load {point.load_us} us "
+                                           "latency p99 (cycles)", point.latency_p99])
     outcome.files = [out_dir / n for n in ("report.md", "report.html", "report.json", "report.csv")] + outcome.files
     return outcome
 
 
-def write_from_file(path: Path, out_dir: Path, baseline_path: Path | None, budget: Budget,
-                    say: Callable[[str], None]) -> Outcome:
-    say(f"report: reading {path}")
-    data = results.load(path)
+def write_from_files(paths: list[Path], out_dir: Path, baseline_path: Path | None, budget: Budget,
+                     say: Callable[[str], None]) -> Outcome:
+    datas = []
+    for path in paths:
+        say(f"report: reading {path}")
+        datas.append(results.load(path))
     baseline = results.load(baseline_path) if baseline_path is not None else None
-    return write(data, out_dir, baseline, budget, say)
+    return write_boards(datas, out_dir, baseline, budget, say)
+

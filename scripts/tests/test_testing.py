@@ -38,8 +38,19 @@ def test_junit_tally_handles_testsuites_root(tmp_path):
 def test_recorded_hashes_reads_twister_recordings(tmp_path):
     report = tmp_path / "twister.json"
     report.write_text(json.dumps({"testsuites": [
-        {"name": "deployment/kit.deployment.rtos", "recording": [
+        {"name": "deployment/kit.deployment.rtos", "platform": "mps2/an385", "recording": [
             {"kind": "RG", "fields": "name=rg1kHz"}, {"kind": "HASH", "fields": "samples=10 fnv=0xdeadbeef"}]},
-        {"name": "deployment/other", "recording": None},
+        {"name": "deployment/kit.deployment.rtos", "platform": "qemu_cortex_m3/ti_lm3s6965", "recording": [
+            {"kind": "HASH", "fields": "samples=10 fnv=0x00c0ffee"}]},
+        {"name": "deployment/other", "platform": "mps2/an385", "recording": None},
     ]}))
-    assert testing.recorded_hashes(report) == {"kit.deployment.rtos": "0xdeadbeef"}
+    assert testing.recorded_hashes(report) == {("mps2/an385", "kit.deployment.rtos"): "0xdeadbeef",
+                                               ("qemu_cortex_m3/ti_lm3s6965", "kit.deployment.rtos"): "0x00c0ffee"}
+
+
+def test_the_suite_boards_are_its_platform_allow_list(tmp_path):
+    assert testing.suite_boards() == ["qemu_cortex_m3", "mps2/an385"]
+    bad = tmp_path / "testcase.yaml"
+    bad.write_text("tests: {}\n")
+    with pytest.raises(KitError, match="names no platforms"):
+        testing.suite_boards(bad)

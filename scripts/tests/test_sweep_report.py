@@ -1,0 +1,98 @@
+"""The load sweep in the report: parsed from SWEEP/BREAK records, breaking
+points computed and cross-checked, plots and guidance generated."""
+
+from kittools import compare, console, report, sweep
+from kittools.footprint import Footprint
+from sample_console import console_log
+
+CYCLES_PER_US = 12  # the sample console's 12 MHz counter
+
+
+def sweep_lines(variant: str, breaks_at: int | None, say_break: int | None | str = "same") -> list[str]:
+    """A slice sweep 0..2000 µs in 500 µs steps: the fast group's latency grows
+    with the load in the cooperative variant and misses deadlines from
+    `breaks_at`; the BREAK line says `say_break` ("same": the truth)."""
+    lines = []
+    for point, load in enumerate(range(0, 2001, 500)):
+        for rg, hz in (("rg1kHz", 1000), ("rg100Hz", 100)):
+            latency_us = 60 + (load // 2 if variant == "baremetal" and rg == "rg1kHz" else 0)
+            missed = breaks_at is not None and rg == "rg1kHz" and load >= breaks_at
+            lines.append(
+                f"KIT SWEEP axis=slice point={point} load_us={load} burst=0 rg={rg} hz={hz} cycles=200 "
+                f"expected=200 slips={20 if missed else 0} late_starts=0 latency_p99={latency_us * CYCLES_PER_US} "
+                f"latency_max={(latency_us + 5) * CYCLES_PER_US} jitter_p99=12 jitter_max=24 exec_max=200 "
+                "load_runs=20 load_dropped=0")
+    said = breaks_at if say_break == "same" else say_break
+    lines.append(f"KIT BREAK axis=slice rg=rg1kHz load_us={'none' if said is None else said}")
+    lines.append("KIT BREAK axis=slice rg=rg100Hz load_us=none")
+    return lines
+
+
+def results(baremetal_says: int | None | str = "same", with_sweep: bool = True) -> dict:
+    def data(variant: str, rom: int, ram: int, breaks_at: int | None, says: int | None | str) -> compare.VariantData:
+        text = console_log(variant)
+        if with_sweep:
+            text += "\n" + "\n".join(sweep_lines(variant, breaks_at, says))
+        return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536), console.parse(text))
+    return compare.as_json([data("baremetal", 96000, 30000, 1000, baremetal_says),
+                            data("rtos", 102000, 42000, None, "same")])
+
+
+def test_points_and_breaking_points_come_from_the_records():
+    data = results()
+    parsed = sweep.of_records(data["variants"]["baremetal"]["records"])
+    assert parsed is not None
+    assert parsed.axes() == ["slice"] and parsed.rate_groups() == ["rg1kHz", "rg100Hz"]
+    assert [p.load_us for p in parsed.series("slice", "rg1kHz")] == [0, 500, 1000, 1500, 2000]
+    assert parsed.breaking_point("slice", "rg1kHz") == 1000
+    assert parsed.breaking_point("slice", "rg100Hz") is None
+    assert parsed.inconsistencies() == []
+
+
+def test_a_break_line_that_disagrees_with_the_points_is_reported():
+    data = results(baremetal_says=1500)
+    parsed = sweep.of_records(data["variants"]["baremetal"]["records"])
+    assert parsed.inconsistencies() == ["slice rg1kHz: BREAK says 1500 µs, the points say 1000 µs"]
+    guidance = report.sweep_guidance(data, report._sweeps(data))
+    assert "baremetal: inconsistent sweep record: slice rg1kHz: BREAK says 1500 µs, the points say 1000 µs" \
+        in guidance.lines
+
+
+def test_guidance_is_generated_from_the_numbers():
+    data = results()
+    lines = report.sweep_guidance(data, report._sweeps(data)).lines
+    assert lines[0] == ("baremetal, slice load: rg1kHz misses deadlines from 1000 µs (100% of the 1000 µs period); "
+                        "its p99 latency starts to grow at 500 µs, from 60.0 µs to 310.0 µs just below the break.")
+    assert lines[1] == ("rtos, slice load: no rate group missed a deadline up to 2000 µs (2.0x the fastest "
+                        "period); rg1kHz p99 latency stayed within 60.0-60.0 µs.")
+    assert lines[-1].startswith("What rtos costs against baremetal at zero load: ROM +6,000 B, static RAM +12,000 B")
+
+
+def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
+    report.write(results(), tmp_path)
+    markdown = (tmp_path / "report.md").read_text()
+    assert "| slice | rg1kHz | 1000 µs | none up to 2000 µs |" in markdown
+    assert "## Latency versus background load, axis 'slice'" in markdown
+    assert "| 1,000 | 560 | 565 | rg1kHz | 60 | 65 | - |" in markdown
+    assert "sweep slice rg1kHz load 1000 us latency p99 (cycles)" in (tmp_path / "report.csv").read_text()
+    assert "http" not in (tmp_path / "report.html").read_text().split("<body", 1)[1]
+
+
+def test_no_sweep_section_without_sweep_records(tmp_path):
+    report.write(results(with_sweep=False), tmp_path)
+    assert "Background load" not in (tmp_path / "report.md").read_text()
+
+
+def test_several_boards_are_reported_side_by_side(tmp_path):
+    first = results()
+    second = results()
+    second["conditions"]["board"] = "mps2/an385"
+    outcome = report.write_boards([first, second], tmp_path)
+    markdown = (tmp_path / "report.md").read_text()
+    assert "| metric | qemu_cortex_m3 baremetal | qemu_cortex_m3 rtos | mps2/an385 baremetal | mps2/an385 rtos |" \
+        in markdown
+    assert "| breaking point, slice load, rg1kHz | 1000 µs | none up to 2000 µs | 1000 µs | none up to 2000 µs |" \
+        in markdown
+    assert "## mps2/an385: Background load: what the sweep says" in markdown
+    assert (tmp_path / "report.csv").read_text().count("mps2/an385 rtos,ROM (bytes)") == 1
+    assert outcome.violations == []
