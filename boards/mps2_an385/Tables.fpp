@@ -1,5 +1,6 @@
-# The priority and stack table of the kit's deployment on mps2/an385 (started from the qemu_cortex_m3 table),
-# used by app/Top/instances.fpp.
+# The priority and stack table of the kit's deployment on mps2/an385, used by
+# app/Top/instances.fpp (scaffolded from qemu_cortex_m3's; the suite's runs
+# on this board confirm it).
 module Kit {
 
   # Written once in F´'s convention: a higher number is more urgent. The

@@ -3,6 +3,7 @@
   kit compare   build both variants, run them under QEMU, write the comparison and its report
   kit report    turn a results file into report.md / .html / .json / .csv (optionally against a baseline)
   kit test      twister suite under QEMU, determinism, budget, host unit tests, tooling tests
+  kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import sys
 from pathlib import Path
 
 from . import compare, conditions, modules, report, results, runner, testing
+from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
 
 
@@ -116,6 +118,12 @@ def cmd_test(args: argparse.Namespace) -> int:
     return 0 if total.failed == 0 and total.passed > 0 else 1
 
 
+def cmd_new_board(args: argparse.Namespace) -> int:
+    check_provisioned()
+    new_board(args.board, args.reference, args.force, _say)
+    return 0
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(prog="kit", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = top.add_subparsers(dest="command", required=True)
@@ -141,6 +149,11 @@ def parser() -> argparse.ArgumentParser:
     t.add_argument("--update-baseline", action="store_true",
                    help="make this run's results tests/baselines/<board>.json (review and commit the change)")
     t.set_defaults(func=cmd_test)
+    n = sub.add_parser("new-board", help="scaffold boards/<board>/ for a new board and add it to the suite")
+    n.add_argument("board", help="board target as west build -b takes it (e.g. mps2/an385)")
+    n.add_argument("--reference", default=REFERENCE_BOARD, help="ported board to start from")
+    n.add_argument("--force", action="store_true", help="write the board's folder again if it exists")
+    n.set_defaults(func=cmd_new_board)
     for command in (r, t):
         command.add_argument("--rom-budget", type=float, default=report.Budget.rom_pct, help="allowed ROM growth, %%")
         command.add_argument("--ram-budget", type=float, default=report.Budget.ram_pct, help="allowed RAM growth, %%")

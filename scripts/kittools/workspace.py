@@ -26,17 +26,25 @@ def board_dir_name(target: str) -> str:
     return target.replace("/", "_")
 
 
+def board_folder(target: str, boards: Path = BOARDS) -> Path | None:
+    """The kit folder of a board target: the target with '/' as '_', else a
+    folder named after the board alone (it covers all its qualifiers)."""
+    for name in (board_dir_name(target), target.split("/", 1)[0]):
+        if (boards / name).is_dir():
+            return boards / name
+    return None
+
+
 def check_board(board: str) -> str:
-    """The board's kit folder name; KitError if the kit has no port for it.
-    The folder is the target as given with '/' as '_'; a folder named after
-    the board alone covers all its qualifiers (app/kit.cmake: the same rule)."""
-    for name in (board_dir_name(board), board.split("/", 1)[0]):
-        if (BOARDS / name).is_dir():
-            return name
-    raise KitError(
-        f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards())}. "
-        "To bring the kit to a new board, see docs/porting.md (kit new-board scaffolds one)."
-    )
+    """The board's kit folder name; KitError if the kit has no port for it
+    (app/kit.cmake applies the same rule)."""
+    folder = board_folder(board)
+    if folder is None:
+        raise KitError(
+            f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards())}. "
+            "To bring the kit to a new board, see docs/porting.md (kit new-board scaffolds one)."
+        )
+    return folder.name
 
 
 def check_variant(variant: str) -> None:
