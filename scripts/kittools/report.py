@@ -340,9 +340,6 @@ def sweep_chart(sweeps: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> 
             axes.set_title(f"{rg}: dispatch latency vs load ({axis})", fontsize=9)
             axes.set_xlabel("load (µs)", fontsize=8)
             axes.set_ylabel("latency (µs)", fontsize=8)
-            low, high = axes.get_ylim()
-            if low > 0 and high / low > 10:  # log only where the range calls for it
-                axes.set_yscale("log")
             axes.legend(fontsize=7)
 
     return Image(f"Latency versus background load, axis '{axis}'", _png(draw, (4.2 * len(rate_groups), 3.4)))
