@@ -49,7 +49,9 @@ def test_recorded_hashes_reads_twister_recordings(tmp_path):
 
 
 def test_the_suite_boards_are_its_platform_allow_list(tmp_path):
-    assert testing.suite_boards() == ["qemu_cortex_m3", "mps2/an385"]
+    suite = tmp_path / "suite.yaml"
+    suite.write_text("common:\n  platform_allow:\n    - qemu_cortex_m3\n    - mps2/an385\ntests: {}\n")
+    assert testing.suite_boards(suite) == ["qemu_cortex_m3", "mps2/an385"]
     bad = tmp_path / "testcase.yaml"
     bad.write_text("tests: {}\n")
     with pytest.raises(KitError, match="names no platforms"):
