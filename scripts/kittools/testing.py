@@ -155,10 +155,14 @@ def run_host_tests(log_dir: Path) -> Tally:
         gtest_json = log_dir / f"{exe.name}.json"
         gtest_json.unlink(missing_ok=True)
         code = _run([str(exe), f"--gtest_output=json:{gtest_json}"], log_dir / f"{exe.name}.log")
-        if gtest_json.is_file():
-            tally.add(gtest_tally(gtest_json))
-        if code != 0 and not gtest_json.is_file():
-            tally.failed += 1  # crashed before writing its report
+        tests = gtest_tally(gtest_json) if gtest_json.is_file() else Tally()
+        tally.add(tests)
+        if code != 0 and tests.failed == 0:
+            # Crashed before its report, or a sanitizer (leak, UB) failed it after
+            # every test passed: one failure, its log says which
+            print(f"[kit]   {exe.name} exited {code} with no failed test: see {log_dir / (exe.name + '.log')}",
+                  flush=True)
+            tally.failed += 1
     if tally.passed + tally.failed == 0:
         raise KitError(f"no host test executable found in {HOST_BUILD / 'bin'}")
     return tally

@@ -3,11 +3,13 @@
 namespace Kit {
 namespace FakeTickClock {
 U32 now = 0;
+U32 step = 0;
 U32 fired = 0;
 U32 stamps[TickClock::STAMP_HISTORY] = {};
 
 void reset() {
     now = 0;
+    step = 0;
     fired = 0;
     for (U32& stamp : stamps) {
         stamp = 0;
@@ -22,7 +24,9 @@ void fire(U32 tick, U32 at) {
 
 namespace TickClock {
 U32 now() {
-    return FakeTickClock::now;
+    const U32 reading = FakeTickClock::now;
+    FakeTickClock::now += FakeTickClock::step;
+    return reading;
 }
 U32 cyclesPerSecond() {
     return 12000000u;

@@ -7,6 +7,9 @@
 namespace Kit {
 namespace FakeTickClock {
 extern U32 now;
+//! Cycles the clock moves on at every reading (0: it stands still), so code
+//! that computes until a time has passed (Busy.hpp) ends in a test too
+extern U32 step;
 extern U32 fired;
 extern U32 stamps[TickClock::STAMP_HISTORY];
 void reset();

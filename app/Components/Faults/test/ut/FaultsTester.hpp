@@ -1,0 +1,31 @@
+#ifndef KIT_FAULTSTESTER_HPP
+#define KIT_FAULTSTESTER_HPP
+
+#include "app/Components/Faults/Faults.hpp"
+#include "app/Components/Faults/FaultsGTestBase.hpp"
+
+namespace Kit {
+
+class FaultsTester : public FaultsGTestBase {
+  public:
+    static const FwSizeType MAX_HISTORY_SIZE = 64;
+    static const FwEnumStoreType TEST_INSTANCE_ID = 0;
+
+    FaultsTester();
+    ~FaultsTester();
+
+    void overrunRunsOnceInItsRateGroup();
+    void injectionsAboveTheirLimitsAreRejected();
+    void stackUseWithinTheLimitCompletes();
+    void assertReachesTheAssertHook();
+
+  private:
+    void connectPorts();
+    void initComponents();
+
+    Faults component;
+};
+
+}  // namespace Kit
+
+#endif

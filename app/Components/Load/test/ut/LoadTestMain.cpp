@@ -1,0 +1,26 @@
+#include "app/Components/Load/test/ut/LoadTester.hpp"
+
+TEST(Load, SliceComputesForTheCommandedTime) {
+    Kit::LoadTester tester;
+    tester.sliceComputesForTheCommandedTime();
+}
+
+TEST(Load, SettingsAboveTheirLimitsAreRejected) {
+    Kit::LoadTester tester;
+    tester.settingsAboveTheirLimitsAreRejected();
+}
+
+TEST(Load, BurstPushesTheCommandedMessages) {
+    Kit::LoadTester tester;
+    tester.burstPushesTheCommandedMessages();
+}
+
+TEST(Load, AFullQueueDropsCountsAndReports) {
+    Kit::LoadTester tester;
+    tester.aFullQueueDropsCountsAndReports();
+}
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
