@@ -1,7 +1,11 @@
-"""`kit new-board`: bring the kit to a new board. Checks that the pinned
-Zephyr knows the board, that it is an ARM board, and that its memory holds
-the deployment as measured on a ported board; then copies the reference
-board's folder with TODOs and adds the board to the twister files."""
+"""`kit new-board`: bring the kit to a new board.
+
+Checks that the pinned Zephyr knows the board (a twister platform file names
+it), that it is an ARM board, and that its flash and RAM hold the deployment
+as measured on a ported board; then copies the reference board's folder with
+a TODO header in each file and adds the board to the twister files'
+platform lists. docs/porting.md is the checklist that follows.
+"""
 
 from __future__ import annotations
 
@@ -13,26 +17,46 @@ from typing import Any, Callable
 
 import yaml
 
-from . import results
-from .workspace import DEPS, KIT_ROOT, VARIANTS, KitError, board_dir_name, board_folder
+from . import results, workspace
+from .workspace import VARIANTS, KitError, board_dir_name, board_folder, ported_boards
 
 REFERENCE_BOARD = "qemu_cortex_m3"
-# Twister files whose platform lists name the kit's boards
-TWISTER_FILES = ("tests/deployment/testcase.yaml", "app/sample.yaml")
+# The kit's toolchains (Debian's arm-none-eabi GCC, the Zephyr SDK's ARM one)
+# build nothing else, and every measurement so far is a Cortex-M's
+SUPPORTED_ARCH = "arm"
+# Twister files whose platform lists name the kit's boards, relative to the kit
+TWISTER_GLOBS = ("tests/*/testcase.yaml", "app/sample.yaml")
+TWISTER_LIST_KEYS = ("platform_allow", "integration_platforms")
 
 # What the porter must check in each file of the new folder (docs/porting.md)
-TODOS = {
-    "kit.conf": ["QEMU icount: set CONFIG_QEMU_ICOUNT_SHIFT so 10^9 / 2^shift instructions per second models",
-                 "the real part's speed, and say why here. Check the console UART and that the system timer",
-                 "does 1 kHz (the banner's cycles_hz is the cycle counter's rate)."],
-    "baremetal.conf": ["Re-measure: run the suite on this board and size CONFIG_MAIN_STACK_SIZE from the",
-                       "'KIT STACK name=main' lines of every scenario, with headroom."],
-    "rtos.conf": ["Re-measure the stacks from the 'KIT STACK' lines of every scenario. Stack protection:",
-                  "CONFIG_HW_STACK_PROTECTION=y where the part has an MPU, else CONFIG_STACK_SENTINEL=y."],
-    "Tables.fpp": ["Priorities and stacks copied from the reference board: check them against this",
-                   "board's runs; every stack must be <= CONFIG_DYNAMIC_THREAD_STACK_SIZE (rtos.conf)."],
-    "app.overlay": ["Devicetree for this board: check the console UART and timers."],
+TODOS: dict[str, tuple[str, ...]] = {
+    "kit.conf": (
+        "QEMU icount: set CONFIG_QEMU_ICOUNT_SHIFT so that 10^9 / 2^shift instructions",
+        "per second models the real part's speed, and say why here (docs/porting.md, step 4).",
+        "Console: the run's record goes to the zephyr,console UART; the banner must appear at boot.",
+        "Tick: the system timer must do 1 kHz; check the banner's cycles_hz (the cycle counter's rate).",
+    ),
+    "baremetal.conf": (
+        "Re-measure CONFIG_MAIN_STACK_SIZE on this board: run the suite and size it from the",
+        "largest 'KIT STACK name=main' line of every scenario, with headroom for the fatal paths.",
+    ),
+    "rtos.conf": (
+        "Re-measure CONFIG_MAIN_STACK_SIZE and CONFIG_DYNAMIC_THREAD_STACK_SIZE on this board from",
+        "the 'KIT STACK' lines of a run of every scenario, with headroom. Stack protection:",
+        "CONFIG_HW_STACK_PROTECTION=y where the part has an MPU, else CONFIG_STACK_SENTINEL=y.",
+    ),
+    "Tables.fpp": (
+        "Priorities and stacks are the reference board's: re-measure the stacks from the",
+        "'KIT STACK' lines of this board's runs and check the priorities (docs/porting.md,",
+        "steps 6-7). Every stack must be <= CONFIG_DYNAMIC_THREAD_STACK_SIZE (rtos.conf).",
+    ),
+    "app.overlay": (
+        "Devicetree copied from the reference board: check the console UART (zephyr,console)",
+        "and the timers against this board's devicetree, or delete this file if not needed.",
+    ),
 }
+DEFAULT_TODO = ("Copied from the reference board: check this file for the new board (docs/porting.md).",)
+TODO_MARK = "TODO(port):"
 
 
 @dataclass(frozen=True)
@@ -45,20 +69,24 @@ class ZephyrBoard:
 
 
 def zephyr_version(zephyr: Path) -> str:
+    """'Zephyr 4.0.0' from its VERSION file, for messages."""
     version = zephyr / "VERSION"
     if not version.is_file():
         return "the pinned Zephyr"
     fields = dict(re.findall(r"^(\w+)\s*=\s*(\S*)", version.read_text(), re.MULTILINE))
-    return "Zephyr {}.{}.{}".format(fields.get("VERSION_MAJOR", "?"), fields.get("VERSION_MINOR", "?"),
-                                    fields.get("PATCHLEVEL", "?"))
+    parts = [fields.get(key, "") for key in ("VERSION_MAJOR", "VERSION_MINOR", "PATCHLEVEL")]
+    return f"Zephyr {'.'.join(parts)}" if all(parts) else "the pinned Zephyr"
 
 
-def _platforms(zephyr: Path) -> dict[str, Path]:
+def platforms(zephyr: Path) -> dict[str, Path]:
     """Twister platform identifier -> its platform file, for every board."""
     found: dict[str, Path] = {}
     for path in sorted((zephyr / "boards").glob("**/*.yaml")):
+        text = path.read_text(errors="replace")
+        if "identifier:" not in text:  # most board yaml are not platform files: skip the parse
+            continue
         try:
-            data = yaml.safe_load(path.read_text())
+            data = yaml.safe_load(text)
         except yaml.YAMLError:
             continue
         if isinstance(data, dict) and isinstance(data.get("identifier"), str):
@@ -66,139 +94,343 @@ def _platforms(zephyr: Path) -> dict[str, Path]:
     return found
 
 
-def _dts_size_kib(platform_file: Path, chosen: str) -> int | None:
-    """Size of the node the board's devicetree chooses as `chosen` (zephyr,sram
-    or zephyr,flash), from its .dts and the .dtsi files beside it."""
-    texts = []
+def resolve_identifier(target: str, known: dict[str, Path], zephyr: Path) -> str:
+    """The platform identifier a user's target means: itself, or the one
+    identifier it is the board name of (mps2 for mps2/an385, and likewise a
+    target short of its last qualifiers); KitError with close matches otherwise."""
+    if target in known:
+        return target
+    same_board = sorted(i for i in known if i.startswith(target + "/"))
+    if len(same_board) == 1:
+        return same_board[0]
+    if same_board:
+        raise KitError(f"'{target}' is several boards in {zephyr_version(zephyr)}: {', '.join(same_board)}. "
+                       "Give the full target.")
+    close = difflib.get_close_matches(target, list(known), n=5)
+    hint = f" Close matches: {', '.join(close)}." if close else ""
+    raise KitError(f"{zephyr_version(zephyr)} has no board '{target}'.{hint} "
+                   "Check the name with `west boards` (the kit pins Zephyr in west.yml).")
+
+
+def _dts_texts(platform_file: Path) -> list[str]:
+    """The board's .dts (same stem as its platform file), then every .dtsi it
+    includes, directly or not, that sits in the same folder. The SoC's .dtsi
+    files live elsewhere and are left out: a size defined only there is
+    reported as unknown rather than guessed."""
     dts = platform_file.with_suffix(".dts")
-    if dts.is_file():
-        texts.append(dts.read_text())
-        for include in re.findall(r'#include\s+"([^"]+\.dtsi)"', texts[0]):
-            if (platform_file.parent / include).is_file():
-                texts.append((platform_file.parent / include).read_text())
-    text = "\n".join(texts)
-    label = re.search(rf"{re.escape(chosen)}\s*=\s*&(\w+)\s*;", text)
+    if not dts.is_file():
+        return []
+    texts, queue, seen = [], [dts], {dts}
+    while queue:
+        text = queue.pop(0).read_text(errors="replace")
+        texts.append(text)
+        for include in re.findall(r'#include\s+["<]([^">]+\.dtsi)[">]', text):
+            path = platform_file.parent / include
+            if path.is_file() and path not in seen:
+                seen.add(path)
+                queue.append(path)
+    return texts
+
+
+def _braced(text: str, open_at: int) -> str:
+    """The text between the brace at `open_at` and its matching close."""
+    depth = 0
+    for index in range(open_at, len(text)):
+        depth += {"{": 1, "}": -1}.get(text[index], 0)
+        if depth == 0:
+            return text[open_at + 1:index]
+    return text[open_at + 1:]
+
+
+def _own_properties(body: str) -> str:
+    """A node's body without its child nodes (a flash node's partitions have
+    regs of their own)."""
+    while True:
+        stripped = re.sub(r"\{[^{}]*\}", "", body)
+        if stripped == body:
+            return body
+        body = stripped
+
+
+def _cell(token: str) -> int | None:
+    """One devicetree cell: a number, or Zephyr's DT_SIZE_K / DT_SIZE_M."""
+    scaled = re.fullmatch(r"DT_SIZE_([KM])\s*\(\s*(\w+)\s*\)", token.strip())
+    try:
+        if scaled:
+            return int(scaled.group(2), 0) * (1024 if scaled.group(1) == "K" else 1024 * 1024)
+        return int(token.strip().strip("()"), 0)
+    except ValueError:
+        return None  # another macro or an expression: left to the build to tell
+
+
+def _reg_size(body: str) -> int | None:
+    """The size of `reg = <ADDR SIZE>` (one or two cells each)."""
+    reg = re.search(r"\breg\s*=\s*<([^>]*)>", _own_properties(body))
+    if reg is None:
+        return None
+    cells = [_cell(c) for c in re.findall(r"DT_SIZE_[KM]\s*\([^)]*\)|\S+", reg.group(1))]
+    if len(cells) == 2:
+        return cells[1]
+    if len(cells) == 4 and cells[2] is not None and cells[3] is not None:
+        return (cells[2] << 32) | cells[3]
+    return None
+
+
+def dts_size_kib(platform_file: Path, chosen: str) -> int | None:
+    """Size in KiB of the node the board's devicetree chooses as `chosen`
+    (zephyr,sram or zephyr,flash); None when the board's own files do not say."""
+    texts = _dts_texts(platform_file)
+    label = next((m.group(1) for t in texts for m in re.finditer(rf"{re.escape(chosen)}\s*=\s*&(\w+)\s*;", t)), None)
     if label is None:
         return None
-    node = re.search(rf"\b{label.group(1)}\s*:[^{{]*\{{[^}}]*?reg\s*=\s*<\s*(\S+)\s+(\S+)\s*>", text, re.DOTALL)
-    if node is None:
-        return None
-    try:
-        return int(node.group(2), 0) // 1024
-    except ValueError:
-        return None  # a macro or an expression: left to the build to tell
+    # A board's `&label { reg = ...; };` overrides the node's own definition
+    patterns = (rf"&{label}\s*\{{", rf"(?<![\w&]){label}\s*:\s*[\w,.@+-]+\s*\{{")
+    for pattern in patterns:
+        for text in texts:
+            for match in re.finditer(pattern, text):
+                size = _reg_size(_braced(text, match.end() - 1))
+                if size is not None:
+                    return size // 1024
+    return None
 
 
-def find_board(target: str, zephyr: Path = DEPS / "zephyr") -> ZephyrBoard:
-    """The board as the pinned Zephyr knows it; KitError naming close matches otherwise."""
-    platforms = _platforms(zephyr)
-    identifier = target if target in platforms else None
-    if identifier is None:
-        by_name = [i for i in platforms if i.split("/", 1)[0] == target]
-        identifier = by_name[0] if len(by_name) == 1 else None
-    if identifier is None:
-        close = difflib.get_close_matches(target, list(platforms), n=5)
-        hint = f" Close matches: {', '.join(close)}." if close else ""
-        raise KitError(f"{zephyr_version(zephyr)} has no board '{target}'.{hint} "
-                       "`west boards` lists them (the kit pins Zephyr in west.yml).")
-    path = platforms[identifier]
+def _yaml_kib(data: dict[str, Any], key: str) -> int | None:
+    value = data.get(key)
+    return value if isinstance(value, int) and not isinstance(value, bool) else None
+
+
+def find_board(target: str, zephyr: Path | None = None) -> ZephyrBoard:
+    """The board as the pinned Zephyr knows it, with its memory in KiB: the
+    platform file's ram/flash, else its devicetree's chosen sram/flash."""
+    zephyr = workspace.DEPS / "zephyr" if zephyr is None else zephyr
+    if not (zephyr / "boards").is_dir():
+        raise KitError(f"no Zephyr board tree at {zephyr / 'boards'}: run scripts/setup.sh first.")
+    known = platforms(zephyr)
+    identifier = resolve_identifier(target, known, zephyr)
+    path = known[identifier]
     data: dict[str, Any] = yaml.safe_load(path.read_text())
-    ram = data.get("ram") if isinstance(data.get("ram"), int) else _dts_size_kib(path, "zephyr,sram")
-    flash = data.get("flash") if isinstance(data.get("flash"), int) else _dts_size_kib(path, "zephyr,flash")
-    return ZephyrBoard(identifier, path, str(data.get("arch", "?")), ram, flash)
+    ram = _yaml_kib(data, "ram")
+    flash = _yaml_kib(data, "flash")
+    return ZephyrBoard(identifier, path, str(data.get("arch", "?")),
+                       ram if ram is not None else dts_size_kib(path, "zephyr,sram"),
+                       flash if flash is not None else dts_size_kib(path, "zephyr,flash"))
 
 
-def check_fit(board: ZephyrBoard, baseline: Path) -> list[str]:
-    """Per variant, the deployment's measured need against the board's memory;
-    KitError if a variant does not fit. Returns the headroom lines."""
+def check_arch(board: ZephyrBoard) -> None:
+    if board.arch != SUPPORTED_ARCH:
+        raise KitError(f"{board.identifier} is a '{board.arch}' board ({board.platform_file.name}); the kit is ARM "
+                       "only: its toolchains are Debian's arm-none-eabi GCC and the Zephyr SDK's ARM one, and its "
+                       "OS layers and measurements are Cortex-M's.")
+
+
+# What to shrink when a resource is short, from docs/porting.md, "Memory budget"
+_LEVERS = {
+    "flash": "F´'s configuration (app/config/) and the components built in",
+    "RAM": "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE (app/prj.conf), the queue depths (app/Top/instances.fpp), "
+           "the stack table (Tables.fpp), F´'s configuration (app/config/)",
+}
+
+
+def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -> list[str]:
+    """Per variant, the deployment's measured need (a ported board's results
+    file) against the board's memory; KitError if a variant does not fit.
+    Returns one headroom line per variant."""
+    shown_as = shown_as or str(baseline)
     if board.ram_kib is None or board.flash_kib is None:
-        raise KitError(f"cannot tell the memory of {board.identifier} (no ram/flash in {board.platform_file.name}, "
-                       "no zephyr,sram/zephyr,flash size in its devicetree): the fit cannot be checked. Build once "
-                       "(west build -b <board> -T app/kit.rtos) and read the linker's 'Memory region' lines.")
+        raise KitError(f"the memory of {board.identifier} is unknown (no ram/flash in {board.platform_file.name}, "
+                       "no size of its zephyr,sram / zephyr,flash nodes in the board's own devicetree), so the fit "
+                       f"cannot be checked. Find out: build once (west build -b {board.identifier} -T app/kit.rtos) "
+                       "and read the linker's 'Memory region' lines, or the board's documentation.")
     measured = results.load(baseline)
-    lines, misfits = [], []
+    have = {"flash": board.flash_kib * 1024, "RAM": board.ram_kib * 1024}
+    headroom: list[str] = []
+    short: list[str] = []
+    short_of: set[str] = set()
     for variant in VARIANTS:
-        metrics = measured["variants"].get(variant, {}).get("metrics", {})
-        need_rom, need_ram = metrics.get("ROM (bytes)"), metrics.get("RAM, static (bytes)")
-        if not isinstance(need_rom, (int, float)) or not isinstance(need_ram, (int, float)):
-            raise KitError(f"{baseline} has no ROM/RAM for the {variant} variant")
-        have_rom, have_ram = board.flash_kib * 1024, board.ram_kib * 1024
-        for what, need, have in (("flash", need_rom, have_rom), ("RAM", need_ram, have_ram)):
-            text = f"{variant}: {what} needs {need / 1024:.1f} KiB, the board has {have / 1024:.0f} KiB"
-            if need > have:
-                misfits.append(text)
-            else:
-                lines.append(f"{text} ({(have - need) / 1024:.1f} KiB spare)")
-    if misfits:
-        raise KitError(f"{board.identifier} cannot hold the deployment, as measured on the reference board "
-                       f"({baseline.name}): " + "; ".join(misfits) + ". Shrink it first: docs/porting.md, "
-                       "'Memory budget'.")
-    return lines
+        metrics = measured["variants"].get(variant, {}).get("metrics")
+        if metrics is None:
+            raise KitError(f"{shown_as} has no {variant} variant to measure the deployment from")
+        need = {"flash": metrics["ROM (bytes)"], "RAM": metrics["RAM, static (bytes)"]}
+        for what in ("flash", "RAM"):
+            if need[what] > have[what]:
+                short.append(f"{variant} needs {need[what] / 1024:.1f} KiB of {what}, "
+                             f"the board has {have[what] / 1024:.0f} KiB")
+                short_of.add(what)
+        headroom.append(f"{variant}: " + ", ".join(
+            f"{what} {need[what] / 1024:.1f} of {have[what] / 1024:.0f} KiB "
+            f"({(have[what] - need[what]) / 1024:.1f} KiB spare)" for what in ("flash", "RAM")))
+    if short:
+        levers = "; ".join(f"{what}: {_LEVERS[what]}" for what in ("flash", "RAM") if what in short_of)
+        raise KitError(f"{board.identifier} cannot hold the deployment as measured in {shown_as}: "
+                       + "; ".join(short) + f". Shrink the deployment first (docs/porting.md, 'Memory budget'): "
+                       + levers + ".")
+    return headroom
 
 
-def _with_todo(name: str, text: str) -> str:
-    todo = TODOS.get(name, ["Check this file for the new board (docs/porting.md)."])
+def _without_todo(name: str, text: str) -> str:
+    """The text without a TODO header of an earlier scaffold (scaffolding from
+    a port whose TODOs are still open must not stack two headers)."""
     if name.endswith(".overlay"):
-        return "/*\n" + "".join(f" * TODO(port): {line}\n" for line in todo) + " */\n" + text
-    return "".join(f"# TODO(port): {line}\n" for line in todo) + text
+        match = re.match(rf"/\*\n(?: \* {re.escape(TODO_MARK)}.*\n)+ \*/\n", text)
+        return text[match.end():] if match else text
+    lines = text.splitlines(keepends=True)
+    kept = 0
+    while kept < len(lines) and lines[kept].startswith(f"# {TODO_MARK}"):
+        kept += 1
+    return "".join(lines[kept:])
+
+
+def with_todo(name: str, text: str, reference: str, identifier: str) -> str:
+    """A copied file with its TODO header, in the file's comment syntax."""
+    todo = (f"copied from boards/{reference}/ for {identifier}: check what follows, then delete this header.",
+            *TODOS.get(name, DEFAULT_TODO))
+    body = _without_todo(name, text)
+    if name.endswith(".overlay"):
+        return "/*\n" + "".join(f" * {TODO_MARK} {line}\n" for line in todo) + " */\n" + body
+    return "".join(f"# {TODO_MARK} {line}\n" for line in todo) + body
+
+
+def _item_name(item: str) -> str:
+    """A list item as a name: no comment, no quotes."""
+    return item.split(" #", 1)[0].strip().strip("'\"")
+
+
+def _add_inline(rest: str, identifier: str) -> str:
+    """A list written on the key's line: `[a, b]` or twister's `a b`; the
+    spacing around it and its comment stay as they were."""
+    value, hash_sign, comment = rest.partition(" #")
+    lead, core, trail = re.fullmatch(r"(\s*)(.*?)(\s*)", value).groups()  # type: ignore[union-attr]
+    if core.startswith("["):
+        if not core.endswith("]"):
+            return rest  # a flow list over several lines: left alone rather than mangled
+        inner = core[1:-1].rstrip()
+        if identifier in [_item_name(n) for n in inner.split(",")]:
+            return rest
+        core = f"[{inner}{', ' if inner.strip() else ''}{identifier}]"
+    elif identifier in [_item_name(n) for n in core.split()]:
+        return rest
+    else:
+        core = f"{core} {identifier}"
+    return f"{lead}{core}{trail}{hash_sign}{comment}"
 
 
 def add_to_twister_lists(text: str, identifier: str) -> str:
-    """`identifier` appended to every platform_allow / integration_platforms
-    list of a twister file, as text (comments and layout kept), once."""
+    """`identifier` added once to every platform_allow / integration_platforms
+    list of a twister file, editing the text so its comments and layout stay:
+    a `- identifier` line after the list's last item, at its indentation."""
+    key = re.compile(rf"^(?P<indent>[ \t]*)(?:{'|'.join(TWISTER_LIST_KEYS)}):(?P<rest>.*?)(?P<eol>\r?\n?)$")
     lines = text.splitlines(keepends=True)
     out: list[str] = []
     index = 0
     while index < len(lines):
-        line = lines[index]
-        out.append(line)
+        match = key.match(lines[index])
         index += 1
-        if re.match(r"^\s*(platform_allow|integration_platforms):\s*$", line):
-            items: list[str] = []
-            while index < len(lines) and re.match(r"^\s*-\s", lines[index]):
-                items.append(lines[index])
-                index += 1
-            out += items
-            names = [item.split("-", 1)[1].strip() for item in items]
-            if items and identifier not in names:
-                indent = items[-1][: len(items[-1]) - len(items[-1].lstrip())]
-                out.append(f"{indent}- {identifier}\n")
+        if match is None:
+            out.append(lines[index - 1])
+            continue
+        rest = match.group("rest")
+        if rest.split(" #", 1)[0].strip():
+            out.append(lines[index - 1][:match.start("rest")] + _add_inline(rest, identifier) + match.group("eol"))
+            continue
+        out.append(lines[index - 1])
+        # The block list: its items, and the comments and blank lines between them
+        item_indent: str | None = None
+        block: list[str] = []
+        last_item = -1
+        while index < len(lines):
+            line = lines[index]
+            item = re.match(r"^([ \t]*)-(?:[ \t]+(.*))?$", line.rstrip("\r\n"))
+            if item and len(item.group(1)) >= len(match.group("indent")) and item_indent in (None, item.group(1)):
+                item_indent = item.group(1)
+                last_item = len(block)
+            elif line.strip() and not line.lstrip().startswith("#"):
+                break
+            block.append(line)
+            index += 1
+        names = [_item_name(re.sub(r"^\s*-", "", line)) for line in block
+                 if re.match(r"^\s*-", line) and not line.lstrip().startswith("#")]
+        if last_item >= 0 and identifier not in names:
+            ending = "\r\n" if block[last_item].endswith("\r\n") else "\n"
+            if not block[last_item].endswith("\n"):
+                block[last_item] += ending  # the list ended the file
+            block.insert(last_item + 1, f"{item_indent}- {identifier}{ending}")
+        out.extend(block)
     return "".join(out)
 
 
-def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False,
-              say: Callable[[str], None] = print, root: Path = KIT_ROOT, zephyr: Path = DEPS / "zephyr") -> Path:
-    """Scaffold boards/<target>/ and add it to the twister files; returns the folder."""
-    board = find_board(target, zephyr)
-    if board.arch != "arm":
-        raise KitError(f"{board.identifier} is a '{board.arch}' board: the kit's toolchains (Debian's "
-                       "arm-none-eabi GCC, the Zephyr SDK's ARM one) and its Cortex-M measurements are ARM only.")
-    boards = root / "boards"
+def twister_files(root: Path) -> list[Path]:
+    """The twister files whose platform lists name the kit's boards."""
+    return [path for pattern in TWISTER_GLOBS for path in sorted(root.glob(pattern)) if path.is_file()]
+
+
+def _check_target_folder(folder: Path, identifier: str, boards: Path, force: bool) -> None:
+    """Refuse to overwrite a port (or shadow one that covers the board) unless forced."""
+    existing = board_folder(identifier, boards)
+    if existing is None or force:
+        return
+    if existing == folder:
+        raise KitError(f"boards/{folder.name} exists already: {identifier} is ported. Use --force to write its "
+                       "files again from the reference (its other files are kept).")
+    raise KitError(f"boards/{existing.name} already covers {identifier} (a folder named after the board covers all "
+                   f"its qualifiers). Use --force to give {identifier} a folder of its own, boards/{folder.name}.")
+
+
+def _reference_folder(reference: str, folder: Path, boards: Path) -> Path:
     reference_dir = board_folder(reference, boards)
     if reference_dir is None:
-        raise KitError(f"reference board '{reference}' has no folder in {boards}")
-    baseline = root / "tests" / "baselines" / f"{reference_dir.name}.json"
-    for line in check_fit(board, baseline):
-        say(f"memory: {line}")
-    say(f"memory: estimated from {reference_dir.name}'s build; the port's own run is the real check")
-    folder = boards / board_dir_name(board.identifier)
-    if folder.exists() and not force:
-        raise KitError(f"{folder} exists already: it is a port. Use --force to write it again from {reference}.")
+        raise KitError(f"reference board '{reference}' has no kit port. Ported boards: "
+                       f"{', '.join(ported_boards(boards))}.")
+    if reference_dir == folder:
+        raise KitError(f"boards/{folder.name} is the reference itself: pick another with --from.")
+    return reference_dir
+
+
+def _copy_folder(reference_dir: Path, folder: Path, identifier: str, root: Path, say: Callable[[str], None]) -> None:
     folder.mkdir(parents=True, exist_ok=True)
-    for source in sorted(reference_dir.iterdir()):
-        if source.is_file():
-            (folder / source.name).write_text(_with_todo(source.name, source.read_text()))
-            say(f"created: {folder.relative_to(root) / source.name}")
-    for name in TWISTER_FILES:
-        path = root / name
-        if path.is_file():
-            before = path.read_text()
-            after = add_to_twister_lists(before, board.identifier)
-            if after != before:
-                path.write_text(after)
-                say(f"twister: {board.identifier} added to {name}")
-    say("next: resolve the TODO(port) lines, then")
+    copied = set()
+    for source in sorted(p for p in reference_dir.iterdir() if p.is_file()):
+        (folder / source.name).write_text(with_todo(source.name, source.read_text(), reference_dir.name, identifier))
+        copied.add(source.name)
+        say(f"created: {(folder / source.name).relative_to(root)} (from {reference_dir.name}, TODO header)")
+    for other in sorted(p.name for p in folder.iterdir() if p.name not in copied):
+        say(f"kept: {(folder / other).relative_to(root)} (not in the reference)")
+
+
+def _join_suite(root: Path, identifier: str, say: Callable[[str], None]) -> None:
+    for path in twister_files(root):
+        before = path.read_text()
+        after = add_to_twister_lists(before, identifier)
+        name = path.relative_to(root)
+        if after != before:
+            path.write_text(after)
+            say(f"twister: added {identifier} to the platform lists of {name}")
+        else:
+            say(f"twister: {name} unchanged (its lists name {identifier} already, or it has none)")
+
+
+def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False,
+              say: Callable[[str], None] = print, root: Path | None = None, zephyr: Path | None = None) -> Path:
+    """Check the board, scaffold boards/<dir>/ from the reference's folder and
+    add the board to the twister files; returns the new folder."""
+    root = workspace.KIT_ROOT if root is None else root
+    zephyr = workspace.DEPS / "zephyr" if zephyr is None else zephyr
+    board = find_board(target, zephyr)
+    check_arch(board)
+    boards = root / "boards"
+    folder = boards / board_dir_name(board.identifier)
+    _check_target_folder(folder, board.identifier, boards, force)
+    reference_dir = _reference_folder(reference, folder, boards)
+    baseline = root / "tests" / "baselines" / f"{reference_dir.name}.json"
+    shown_as = str(baseline.relative_to(root))
+    say(f"{board.identifier}: known to {zephyr_version(zephyr)} ({board.platform_file.name}), arch arm")
+    for line in check_fit(board, baseline, shown_as):
+        say(f"memory: {line}")
+    say(f"memory: an estimate from {reference_dir.name}'s build ({shown_as}); ROM can differ a few % on "
+        "another board, so the real check is this port's own run")
+    _copy_folder(reference_dir, folder, board.identifier, root, say)
+    _join_suite(root, board.identifier, say)
+    say("next: resolve the TODO(port) headers in "
+        f"boards/{folder.name}/, then follow the checklist in docs/porting.md:")
     say(f"  scripts/kit compare --board {board.identifier}")
     say(f"  scripts/kit test --board {board.identifier} --update-baseline   (review and commit the baseline)")
-    say("  and the checklist in docs/porting.md")
     return folder

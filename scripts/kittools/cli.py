@@ -119,7 +119,8 @@ def cmd_test(args: argparse.Namespace) -> int:
 
 
 def cmd_new_board(args: argparse.Namespace) -> int:
-    check_provisioned()
+    # Only Zephyr's board tree is needed (new_board says so if it is missing):
+    # no F´ checkout, so a port can be scaffolded before the rest is fetched
     new_board(args.board, args.reference, args.force, _say)
     return 0
 
@@ -150,8 +151,9 @@ def parser() -> argparse.ArgumentParser:
                    help="make this run's results tests/baselines/<board>.json (review and commit the change)")
     t.set_defaults(func=cmd_test)
     n = sub.add_parser("new-board", help="scaffold boards/<board>/ for a new board and add it to the suite")
-    n.add_argument("board", help="board target as west build -b takes it (e.g. mps2/an385)")
-    n.add_argument("--reference", default=REFERENCE_BOARD, help="ported board to start from")
+    n.add_argument("board", metavar="BOARD", help="board target as west build -b takes it (e.g. mps2/an385)")
+    n.add_argument("--from", "--reference", dest="reference", metavar="REFERENCE", default=REFERENCE_BOARD,
+                   help=f"ported board to copy the folder and the measured footprint of (default: {REFERENCE_BOARD})")
     n.add_argument("--force", action="store_true", help="write the board's folder again if it exists")
     n.set_defaults(func=cmd_new_board)
     for command in (r, t):

@@ -17,8 +17,9 @@ class KitError(RuntimeError):
     """A problem the user can fix; the message says how."""
 
 
-def ported_boards() -> list[str]:
-    return sorted(p.name for p in BOARDS.iterdir() if p.is_dir())
+def ported_boards(boards: Path | None = None) -> list[str]:
+    boards = BOARDS if boards is None else boards
+    return sorted(p.name for p in boards.iterdir() if p.is_dir()) if boards.is_dir() else []
 
 
 def board_dir_name(target: str) -> str:
@@ -26,22 +27,24 @@ def board_dir_name(target: str) -> str:
     return target.replace("/", "_")
 
 
-def board_folder(target: str, boards: Path = BOARDS) -> Path | None:
+def board_folder(target: str, boards: Path | None = None) -> Path | None:
     """The kit folder of a board target: the target with '/' as '_', else a
-    folder named after the board alone (it covers all its qualifiers)."""
+    folder named after the board alone (it covers all its qualifiers). The
+    full name wins, so one qualifier can have a port of its own."""
+    boards = BOARDS if boards is None else boards  # looked up at call time: tests point it elsewhere
     for name in (board_dir_name(target), target.split("/", 1)[0]):
         if (boards / name).is_dir():
             return boards / name
     return None
 
 
-def check_board(board: str) -> str:
+def check_board(board: str, boards: Path | None = None) -> str:
     """The board's kit folder name; KitError if the kit has no port for it
     (app/kit.cmake applies the same rule)."""
-    folder = board_folder(board)
+    folder = board_folder(board, boards)
     if folder is None:
         raise KitError(
-            f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards())}. "
+            f"board '{board}' has no kit port. Ported boards: {', '.join(ported_boards(boards))}. "
             "To bring the kit to a new board, see docs/porting.md (kit new-board scaffolds one)."
         )
     return folder.name

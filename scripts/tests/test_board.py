@@ -1,17 +1,21 @@
-"""kit new-board: a fake Zephyr board tree and a fake kit in tmp_path."""
+"""kit new-board: a fake Zephyr board tree, a fake kit and fake baselines in tmp_path."""
 
-import shutil
+from __future__ import annotations
+
+import json
 from pathlib import Path
 
 import pytest
 
-from kittools import board, workspace
-from kittools.workspace import KIT_ROOT, KitError
+from kittools import board, cli, compare, workspace
+from kittools.workspace import KitError
 
 SUITE = """# the suite
 common:
   platform_allow:
     - qemu_cortex_m3
+    # a comment between items
+    - "mps2/an521"   # quoted, with a comment
   integration_platforms:
     - qemu_cortex_m3
   tags: kit
@@ -19,101 +23,319 @@ tests:
   kit.one:
     platform_allow:
       - qemu_cortex_m3   # only here
+
+  kit.two:
+    platform_allow: qemu_cortex_m3 mps2/an521
+    integration_platforms: [qemu_cortex_m3]  # flow style
+    harness: console
 """
 
+REFERENCE_FILES = {
+    "kit.conf": "# reference kit.conf\nCONFIG_QEMU_ICOUNT=y\nCONFIG_QEMU_ICOUNT_SHIFT=4\n",
+    "baremetal.conf": "CONFIG_MAIN_STACK_SIZE=2048\n",
+    "rtos.conf": "CONFIG_DYNAMIC_THREAD_STACK_SIZE=2048\nCONFIG_MAIN_STACK_SIZE=1024\n",
+    "Tables.fpp": "module Kit {\n  module Priorities {\n    constant rg1kHz = 12\n  }\n"
+                  "  module Stacks {\n    constant rg1kHz = 2048\n  }\n}\n",
+    "app.overlay": "/ {\n  chosen {\n    zephyr,console = &uart0;\n  };\n};\n",
+}
 
-def _zephyr(tmp_path: Path) -> Path:
+# The deployment as measured on the reference board (bytes): about 108 KiB of
+# flash and 48 KiB of RAM at most, as on qemu_cortex_m3
+FOOTPRINT = {"baremetal": (105046, 33216), "rtos": (110736, 48904)}
+
+
+def _platform(zephyr: Path, folder: str, stem: str, text: str) -> Path:
+    path = zephyr / "boards" / folder / f"{stem}.yaml"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return path
+
+
+def _zephyr(tmp_path: Path, version: bool = True) -> Path:
     zephyr = tmp_path / "zephyr"
-    (zephyr / "boards" / "qemu" / "m3").mkdir(parents=True)
-    (zephyr / "boards" / "qemu" / "m3" / "qemu_cortex_m3.yaml").write_text(
-        "identifier: qemu_cortex_m3\narch: arm\nram: 64\nflash: 256\n")
-    (zephyr / "boards" / "qemu" / "m0").mkdir(parents=True)
-    (zephyr / "boards" / "qemu" / "m0" / "qemu_cortex_m0.yaml").write_text(
-        "identifier: qemu_cortex_m0\narch: arm\nram: 16\nflash: 256\n")
-    (zephyr / "boards" / "qemu" / "x86").mkdir(parents=True)
-    (zephyr / "boards" / "qemu" / "x86" / "qemu_x86.yaml").write_text("identifier: qemu_x86\narch: x86\n")
-    mps2 = zephyr / "boards" / "arm" / "mps2"
-    mps2.mkdir(parents=True)
-    (mps2 / "mps2_an385.yaml").write_text("identifier: mps2/an385\narch: arm\n")
-    (mps2 / "mps2_an385.dts").write_text('#include "mps2_mem.dtsi"\n/ {\n chosen {\n  zephyr,sram = &sram0;\n'
-                                         "  zephyr,flash = &flash0;\n };\n};\n")
-    (mps2 / "mps2_mem.dtsi").write_text("/ {\n sram0: memory@20000000 {\n  compatible = \"mmio-sram\";\n"
-                                        "  reg = <0x20000000 0x400000>;\n };\n flash0: flash@0 {\n"
-                                        "  reg = <0 0x200000>;\n };\n};\n")
-    (zephyr / "VERSION").write_text("VERSION_MAJOR = 4\nVERSION_MINOR = 0\nPATCHLEVEL = 0\n")
+    _platform(zephyr, "qemu/cortex_m3", "qemu_cortex_m3", "identifier: qemu_cortex_m3\narch: arm\nram: 64\nflash: 256\n")
+    _platform(zephyr, "qemu/cortex_m0", "qemu_cortex_m0", "identifier: qemu_cortex_m0\narch: arm\nram: 16\nflash: 256\n")
+    _platform(zephyr, "qemu/x86", "qemu_x86", "identifier: qemu_x86\narch: x86\nram: 1024\nflash: 1024\n")
+    (zephyr / "boards" / "qemu" / "x86" / "board.yml").write_text("board:\n  name: qemu_x86\n")
+    mps2 = _platform(zephyr, "arm/mps2", "mps2_an385", "identifier: mps2/an385\narch: arm\n").parent
+    (mps2 / "mps2_an385.dts").write_text(
+        '#include <arm/armv7-m.dtsi>\n#include "mps2_mem.dtsi"\n/ {\n chosen {\n  zephyr,sram = &sram0;\n'
+        "  zephyr,flash = &flash0;\n };\n};\n")
+    (mps2 / "mps2_mem.dtsi").write_text(
+        '/ {\n sram0: memory@20000000 {\n  compatible = "mmio-sram";\n  reg = <0x20000000 0x400000>;\n };\n'
+        " flash0: flash@0 {\n  partitions {\n   slot0: partition@0 {\n    reg = <0x0 0x8000>;\n   };\n  };\n"
+        "  reg = <0 0x200000>;\n };\n};\n")
+    _platform(zephyr, "arm/mps2", "mps2_an521_cpu0", "identifier: mps2/an521/cpu0\narch: arm\nram: 4096\n"
+              "flash: 4096\n")
+    _platform(zephyr, "arm/mps2", "mps2_an521_cpu1", "identifier: mps2/an521/cpu1\narch: arm\nram: 4096\n"
+              "flash: 4096\n")
+    _platform(zephyr, "nxp/frdm_k64f", "frdm_k64f", "identifier: frdm_k64f/mk64f12\narch: arm\nram: 192\n"
+              "flash: 1024\n")
+    nucleo = _platform(zephyr, "st/nucleo", "nucleo_small", "identifier: nucleo_small\narch: arm\n").parent
+    (nucleo / "nucleo_small.dts").write_text(
+        "/ {\n chosen {\n  zephyr,sram = &sram0;\n  zephyr,flash = &flash0;\n };\n"
+        " sram0: memory@20000000 {\n  reg = <0x20000000 DT_SIZE_K(20)>;\n };\n};\n"
+        "&flash0 {\n reg = <0x08000000 DT_SIZE_K(64)>;\n};\n")
+    _platform(zephyr, "vendor/mystery", "mystery", "identifier: mystery\narch: arm\n")
+    if version:
+        (zephyr / "VERSION").write_text("VERSION_MAJOR = 4\nVERSION_MINOR = 0\nPATCHLEVEL = 0\nVERSION_TWEAK = 0\n")
     return zephyr
 
 
-def _kit(tmp_path: Path) -> Path:
+def _results(footprint: dict[str, tuple[int, int]]) -> dict:
+    """A minimal results file (docs/results.md) holding just a footprint."""
+    return {"schema_version": compare.SCHEMA_VERSION, "conditions": {},
+            "variants": {v: {"metrics": {"ROM (bytes)": rom, "RAM, static (bytes)": ram}, "records": []}
+                         for v, (rom, ram) in footprint.items()}}
+
+
+def _kit(tmp_path: Path, footprint: dict[str, tuple[int, int]] = FOOTPRINT) -> Path:
     root = tmp_path / "kit"
-    shutil.copytree(KIT_ROOT / "boards" / "qemu_cortex_m3", root / "boards" / "qemu_cortex_m3")
+    reference = root / "boards" / "qemu_cortex_m3"
+    reference.mkdir(parents=True)
+    for name, text in REFERENCE_FILES.items():
+        (reference / name).write_text(text)
     (root / "tests" / "baselines").mkdir(parents=True)
-    shutil.copy(KIT_ROOT / "tests" / "baselines" / "qemu_cortex_m3.json", root / "tests" / "baselines")
+    (root / "tests" / "baselines" / "qemu_cortex_m3.json").write_text(json.dumps(_results(footprint)))
     (root / "tests" / "deployment").mkdir()
     (root / "tests" / "deployment" / "testcase.yaml").write_text(SUITE)
+    (root / "tests" / "host").mkdir()  # a test folder without a twister file
+    (root / "app").mkdir()
+    (root / "app" / "sample.yaml").write_text("sample:\n  name: kit\ncommon:\n  platform_allow:\n"
+                                              "    - qemu_cortex_m3\n")
     return root
 
 
+def _quiet(_message: str) -> None:
+    pass
+
+
+# --- Zephyr knows the board ------------------------------------------------
+
 def test_unknown_board_is_refused_with_close_matches(tmp_path):
-    with pytest.raises(KitError, match=r"Zephyr 4\.0\.0 has no board 'qemu_cortex_m4'\. Close matches: "
-                                       r"qemu_cortex_m3, qemu_cortex_m0"):
+    with pytest.raises(KitError) as error:
         board.find_board("qemu_cortex_m4", _zephyr(tmp_path))
+    message = str(error.value)
+    assert message.startswith("Zephyr 4.0.0 has no board 'qemu_cortex_m4'. Close matches: ")
+    assert "qemu_cortex_m3" in message and "qemu_cortex_m0" in message and "west boards" in message
 
 
-def test_memory_comes_from_the_platform_file_or_the_devicetree(tmp_path):
+def test_without_a_version_file_the_message_names_the_pinned_zephyr(tmp_path):
+    with pytest.raises(KitError, match="^the pinned Zephyr has no board 'zzz'"):
+        board.find_board("zzz", _zephyr(tmp_path, version=False))
+
+
+def test_a_board_name_stands_for_its_only_target_and_not_for_several(tmp_path):
     zephyr = _zephyr(tmp_path)
-    m3 = board.find_board("qemu_cortex_m3", zephyr)
-    assert (m3.ram_kib, m3.flash_kib) == (64, 256)
-    an385 = board.find_board("mps2/an385", zephyr)
+    assert board.find_board("frdm_k64f", zephyr).identifier == "frdm_k64f/mk64f12"
+    assert board.find_board("mps2/an385", zephyr).identifier == "mps2/an385"
+    # mps2/an521 is two targets (cpu0, cpu1): neither is guessed
+    with pytest.raises(KitError, match="'mps2/an521' is several boards .*: mps2/an521/cpu0, mps2/an521/cpu1"):
+        board.find_board("mps2/an521", zephyr)
+    with pytest.raises(KitError, match="'mps2' is several boards"):
+        board.find_board("mps2", zephyr)
+
+
+def test_a_missing_zephyr_says_to_run_setup(tmp_path):
+    with pytest.raises(KitError, match="scripts/setup.sh"):
+        board.find_board("qemu_cortex_m3", tmp_path / "nothing")
+
+
+def test_a_board_of_another_architecture_is_refused(tmp_path):
+    root = _kit(tmp_path)
+    with pytest.raises(KitError, match="qemu_x86 is a 'x86' board .* the kit is ARM only: .*arm-none-eabi"):
+        board.new_board("qemu_x86", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
+    assert not (root / "boards" / "qemu_x86").exists()
+
+
+# --- memory -----------------------------------------------------------------
+
+def test_memory_comes_from_the_platform_file(tmp_path):
+    m3 = board.find_board("qemu_cortex_m3", _zephyr(tmp_path))
+    assert (m3.ram_kib, m3.flash_kib, m3.arch) == (64, 256, "arm")
+
+
+def test_memory_comes_from_the_devicetree_and_its_includes(tmp_path):
+    an385 = board.find_board("mps2/an385", _zephyr(tmp_path))
+    # sram0 in the included .dtsi; flash0's own reg, not its partition's
     assert (an385.ram_kib, an385.flash_kib) == (4096, 2048)
-    assert board.find_board("mps2", zephyr).identifier == "mps2/an385"  # the only mps2
+
+
+def test_devicetree_sizes_in_dt_size_k_and_label_overrides(tmp_path):
+    nucleo = board.find_board("nucleo_small", _zephyr(tmp_path))
+    assert (nucleo.ram_kib, nucleo.flash_kib) == (20, 64)
+
+
+def test_unknown_memory_says_how_to_find_out(tmp_path):
+    mystery = board.find_board("mystery", _zephyr(tmp_path))
+    assert (mystery.ram_kib, mystery.flash_kib) == (None, None)
+    with pytest.raises(KitError, match="fit cannot be checked.*'Memory region' lines"):
+        board.new_board("mystery", root=_kit(tmp_path), zephyr=_zephyr(tmp_path), say=_quiet)
 
 
 def test_a_board_too_small_is_refused_with_the_numbers(tmp_path):
     root = _kit(tmp_path)
     with pytest.raises(KitError) as error:
-        board.new_board("qemu_cortex_m0", root=root, zephyr=_zephyr(tmp_path), say=lambda _m: None)
+        board.new_board("qemu_cortex_m0", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
     message = str(error.value)
-    assert "qemu_cortex_m0 cannot hold the deployment" in message
-    assert "rtos: RAM needs" in message and "the board has 16 KiB" in message and "Memory budget" in message
+    assert "qemu_cortex_m0 cannot hold the deployment as measured in tests/baselines/qemu_cortex_m3.json" in message
+    assert "baremetal needs 32.4 KiB of RAM, the board has 16 KiB" in message
+    assert "rtos needs 47.8 KiB of RAM, the board has 16 KiB" in message
+    assert "of flash" not in message  # 256 KiB of flash is enough
+    assert "'Memory budget'" in message and "MALLOC_ARENA_SIZE" in message
     assert not (root / "boards" / "qemu_cortex_m0").exists()
 
 
-def test_a_board_of_another_architecture_is_refused(tmp_path):
-    with pytest.raises(KitError, match="'x86' board"):
-        board.new_board("qemu_x86", root=_kit(tmp_path), zephyr=_zephyr(tmp_path), say=lambda _m: None)
+def test_flash_that_is_short_is_named_with_its_levers(tmp_path):
+    root = _kit(tmp_path, {"baremetal": (300_000, 1000), "rtos": (100_000, 1000)})
+    m0 = board.find_board("qemu_cortex_m0", _zephyr(tmp_path))
+    with pytest.raises(KitError) as error:
+        board.check_fit(m0, root / "tests" / "baselines" / "qemu_cortex_m3.json")
+    message = str(error.value)
+    assert "baremetal needs 293.0 KiB of flash, the board has 256 KiB" in message and "rtos needs" not in message
+    assert "app/config/" in message and "MALLOC_ARENA_SIZE" not in message
 
 
-def test_the_scaffold_copies_the_reference_with_todos_and_joins_the_suite(tmp_path):
+# --- the scaffold -----------------------------------------------------------
+
+def test_the_scaffold_copies_the_reference_with_todo_headers(tmp_path):
+    root = _kit(tmp_path)
+    said: list[str] = []
+    folder = board.new_board("mps2/an385", root=root, zephyr=_zephyr(tmp_path), say=said.append)
+    assert folder == root / "boards" / "mps2_an385"
+    assert sorted(p.name for p in folder.iterdir()) == sorted(REFERENCE_FILES)
+    for name, original in REFERENCE_FILES.items():
+        text = (folder / name).read_text()
+        assert text.endswith(original)  # the reference's content, unchanged, under the header
+        header = text[:-len(original)]
+        assert "copied from boards/qemu_cortex_m3/ for mps2/an385" in header
+        if name.endswith(".overlay"):
+            assert header.startswith("/*\n * TODO(port): ") and header.endswith(" */\n")
+        else:
+            assert all(line.startswith("# TODO(port): ") for line in header.splitlines())
+    assert "CONFIG_QEMU_ICOUNT_SHIFT" in (folder / "kit.conf").read_text().split("CONFIG_QEMU_ICOUNT=y")[0]
+    assert "console" in (folder / "kit.conf").read_text() and "1 kHz" in (folder / "kit.conf").read_text()
+    assert "KIT STACK" in (folder / "baremetal.conf").read_text() and "KIT STACK" in (folder / "rtos.conf").read_text()
+    assert "<= CONFIG_DYNAMIC_THREAD_STACK_SIZE" in (folder / "Tables.fpp").read_text()
+    output = "\n".join(said)
+    assert "created: boards/mps2_an385/kit.conf" in output
+    assert "memory: rtos: flash 108.1 of 2048 KiB" in output and "RAM 47.8 of 4096 KiB" in output
+    assert "ROM can differ a few %" in output
+    assert "twister: added mps2/an385 to the platform lists of tests/deployment/testcase.yaml" in output
+    assert "twister: added mps2/an385 to the platform lists of app/sample.yaml" in output
+    assert "scripts/kit compare --board mps2/an385" in output and "scripts/kit test --board mps2/an385" in output
+    assert "docs/porting.md" in output
+
+
+def test_the_scaffold_refuses_to_overwrite_a_port_unless_forced(tmp_path):
     root = _kit(tmp_path)
     zephyr = _zephyr(tmp_path)
-    said: list[str] = []
-    folder = board.new_board("mps2/an385", root=root, zephyr=zephyr, say=said.append)
-    assert folder == root / "boards" / "mps2_an385"
-    assert sorted(p.name for p in folder.iterdir()) == ["Tables.fpp", "baremetal.conf", "kit.conf", "rtos.conf"]
-    assert (folder / "kit.conf").read_text().startswith("# TODO(port): QEMU icount")
-    assert "CONFIG_QEMU_ICOUNT=y" in (folder / "kit.conf").read_text()
+    folder = board.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    (folder / "kit.conf").write_text("CONFIG_QEMU_ICOUNT_SHIFT=5\n")
+    with pytest.raises(KitError, match="boards/mps2_an385 exists already.*--force"):
+        board.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    assert (folder / "kit.conf").read_text() == "CONFIG_QEMU_ICOUNT_SHIFT=5\n"
+    board.new_board("mps2/an385", root=root, zephyr=zephyr, force=True, say=_quiet)
+    assert "CONFIG_QEMU_ICOUNT_SHIFT=4" in (folder / "kit.conf").read_text()
     suite = (root / "tests" / "deployment" / "testcase.yaml").read_text()
-    assert suite.count("- mps2/an385") == 3 and "# only here" in suite
-    assert any("rtos: RAM needs" in line and "spare" in line for line in said)
-    with pytest.raises(KitError, match="exists already"):
-        board.new_board("mps2/an385", root=root, zephyr=zephyr, say=said.append)
+    assert suite.count("mps2/an385") == 5  # the second run added nothing
 
 
-def test_twister_lists_gain_the_board_once():
+def test_scaffolding_from_an_unresolved_port_does_not_stack_headers(tmp_path):
+    root = _kit(tmp_path)
+    zephyr = _zephyr(tmp_path)
+    board.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    (root / "tests" / "baselines" / "mps2_an385.json").write_text(json.dumps(_results(FOOTPRINT)))
+    _platform(zephyr, "big", "big_board", "identifier: big_board\narch: arm\nram: 512\nflash: 2048\n")
+    folder = board.new_board("big_board", "mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    for name in ("kit.conf", "app.overlay"):
+        text = (folder / name).read_text()
+        assert text.count("TODO(port): copied from") == 1 and "copied from boards/mps2_an385/ for big_board" in text
+
+
+def test_a_port_covering_the_board_or_a_missing_reference_is_refused(tmp_path):
+    root = _kit(tmp_path)
+    zephyr = _zephyr(tmp_path)
+    (root / "boards" / "mps2").mkdir()  # covers every mps2 target
+    with pytest.raises(KitError, match="boards/mps2 already covers mps2/an385"):
+        board.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    with pytest.raises(KitError, match="reference board 'nrf52840dk' has no kit port. Ported boards: mps2, "
+                                       "qemu_cortex_m3"):
+        board.new_board("qemu_cortex_m3", "nrf52840dk", root=root, zephyr=zephyr, force=True, say=_quiet)
+    with pytest.raises(KitError, match="the reference itself"):
+        board.new_board("qemu_cortex_m3", root=root, zephyr=zephyr, force=True, say=_quiet)
+
+
+def test_the_cli_scaffolds_with_from(tmp_path, monkeypatch, capsys):
+    root = _kit(tmp_path)
+    monkeypatch.setattr(workspace, "KIT_ROOT", root)
+    monkeypatch.setattr(workspace, "DEPS", tmp_path)  # tmp_path/zephyr
+    _zephyr(tmp_path)
+    assert cli.main(["new-board", "mps2/an385", "--from", "qemu_cortex_m3"]) == 0
+    assert "[kit] created: boards/mps2_an385/Tables.fpp" in capsys.readouterr().out
+    assert cli.main(["new-board", "mps2/an385"]) == 2
+    assert "exists already" in capsys.readouterr().err
+
+
+# --- twister lists ----------------------------------------------------------
+
+def test_twister_lists_gain_the_board_once_and_keep_their_comments():
     once = board.add_to_twister_lists(SUITE, "mps2/an385")
-    assert once.count("mps2/an385") == 3
+    assert once == SUITE.replace(
+        '    - "mps2/an521"   # quoted, with a comment\n',
+        '    - "mps2/an521"   # quoted, with a comment\n    - mps2/an385\n').replace(
+        "  integration_platforms:\n    - qemu_cortex_m3\n",
+        "  integration_platforms:\n    - qemu_cortex_m3\n    - mps2/an385\n").replace(
+        "      - qemu_cortex_m3   # only here\n",
+        "      - qemu_cortex_m3   # only here\n      - mps2/an385\n").replace(
+        "platform_allow: qemu_cortex_m3 mps2/an521\n", "platform_allow: qemu_cortex_m3 mps2/an521 mps2/an385\n").replace(
+        "[qemu_cortex_m3]  # flow style", "[qemu_cortex_m3, mps2/an385]  # flow style")
     assert board.add_to_twister_lists(once, "mps2/an385") == once
-    assert "      - mps2/an385\n" in once  # the nested list's own indentation
 
 
-def test_board_folders_are_found_by_full_target_then_board_name():
-    assert workspace.check_board("qemu_cortex_m3/ti_lm3s6965") == "qemu_cortex_m3"
-    assert workspace.check_board("mps2/an385") == "mps2_an385"
+def test_twister_lists_that_name_the_board_already_are_skipped():
+    # quoted and commented items count; the other lists still gain it
+    assert board.add_to_twister_lists(SUITE, "mps2/an521") == SUITE.replace(
+        "  integration_platforms:\n    - qemu_cortex_m3\n",
+        "  integration_platforms:\n    - qemu_cortex_m3\n    - mps2/an521\n").replace(
+        "      - qemu_cortex_m3   # only here\n",
+        "      - qemu_cortex_m3   # only here\n      - mps2/an521\n").replace(
+        "[qemu_cortex_m3]  # flow style", "[qemu_cortex_m3, mps2/an521]  # flow style")
+
+
+def test_a_list_at_the_end_of_the_file_gains_a_line():
+    assert board.add_to_twister_lists("common:\n  platform_allow:\n  - a", "b") == \
+        "common:\n  platform_allow:\n  - a\n  - b\n"
+
+
+def test_the_twister_files_are_every_suites_and_the_samples(tmp_path):
+    root = _kit(tmp_path)
+    (root / "tests" / "other").mkdir()
+    (root / "tests" / "other" / "testcase.yaml").write_text("tests:\n  x:\n    platform_allow:\n      - a\n")
+    names = [str(p.relative_to(root)) for p in board.twister_files(root)]
+    assert names == ["tests/deployment/testcase.yaml", "tests/other/testcase.yaml", "app/sample.yaml"]
+
+
+# --- the kit's own lookup of a board folder ---------------------------------
+
+def test_board_folders_are_found_by_full_target_then_board_name(tmp_path):
+    for name in ("mps2", "mps2_an385", "qemu_cortex_m3"):
+        (tmp_path / name).mkdir()
     assert workspace.board_dir_name("mps2/an385") == "mps2_an385"
+    assert workspace.check_board("qemu_cortex_m3", tmp_path) == "qemu_cortex_m3"
+    assert workspace.check_board("qemu_cortex_m3/ti_lm3s6965", tmp_path) == "qemu_cortex_m3"
+    assert workspace.check_board("mps2/an385", tmp_path) == "mps2_an385"  # its own folder wins
+    assert workspace.check_board("mps2/an521/cpu0", tmp_path) == "mps2"  # the board's folder covers it
+    with pytest.raises(KitError) as error:
+        workspace.check_board("nucleo_f429zi/stm32f429xx", tmp_path)
+    message = str(error.value)
+    assert "'nucleo_f429zi/stm32f429xx' has no kit port" in message
+    assert "Ported boards: mps2, mps2_an385, qemu_cortex_m3" in message and "docs/porting.md" in message
 
 
 @pytest.mark.skipif(not (workspace.DEPS / "zephyr" / "boards").is_dir(), reason="workspace not provisioned")
 def test_the_pinned_zephyr_knows_both_ported_boards():
-    assert board.find_board("qemu_cortex_m3").ram_kib == 64
-    assert board.find_board("mps2/an385").ram_kib == 4096
+    m3 = board.find_board("qemu_cortex_m3")
+    assert (m3.identifier, m3.arch, m3.ram_kib, m3.flash_kib) == ("qemu_cortex_m3", "arm", 64, 256)
+    an385 = board.find_board("mps2/an385")
+    assert (an385.arch, an385.ram_kib, an385.flash_kib) == ("arm", 4096, 4096)  # from its devicetree

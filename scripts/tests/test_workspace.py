@@ -9,6 +9,15 @@ def test_ported_board_is_accepted_with_or_without_qualifiers():
     assert workspace.check_board("qemu_cortex_m3/ti_lm3s6965") == "qemu_cortex_m3"
 
 
+def test_a_qualified_target_has_a_folder_of_its_own_before_its_board_name(tmp_path):
+    (tmp_path / "mps2").mkdir()
+    assert workspace.board_dir_name("mps2/an385") == "mps2_an385"
+    assert workspace.check_board("mps2/an385", tmp_path) == "mps2"
+    (tmp_path / "mps2_an385").mkdir()
+    assert workspace.check_board("mps2/an385", tmp_path) == "mps2_an385"
+    assert workspace.check_board("mps2/an521", tmp_path) == "mps2"
+
+
 def test_unknown_board_names_the_ported_ones_and_the_guide():
     with pytest.raises(KitError) as error:
         workspace.check_board("nucleo_f429zi")
