@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  GeneratedIds.hpp
 // \brief  Opcodes and event IDs the deployment code needs by name

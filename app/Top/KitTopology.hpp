@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  KitTopology.hpp
 // \brief  Set up and tear down the kit's deployment (shared by both variants)

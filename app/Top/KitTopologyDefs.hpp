@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  KitTopologyDefs.hpp
 // \brief  Definitions the generated topology code expects

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
   # The priority and stack table (Kit.Priorities, Kit.Stacks) is the

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
   @ The kit's one deployment, built unchanged as the baremetal and the RTOS variant

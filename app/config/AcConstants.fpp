@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Port-array sizes, cut to what the kit's topology uses: every port is an
 # object in RAM, so the F´ defaults (sized for a Linux Ref app) cost kilobytes.
 

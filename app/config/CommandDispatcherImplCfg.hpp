@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dispatch table: one entry per registered opcode (the kit has ~20).
 // Sequence tracking: commands in flight from the uplink at once.
 #ifndef CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Buffer and string sizes for a 64 KiB-RAM target. Every queued command, event
 # and telemetry message carries a buffer of FW_COM_BUFFER_MAX_SIZE, so this one
 # number sets most of the queue memory; 128 bytes holds every packet the kit

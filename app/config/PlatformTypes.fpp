@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Integer types for a 32-bit microcontroller. fprime-zephyr's platform sizes
 # everything in 64 bits; on a Cortex-M3 every 64-bit division is a library
 # call, and fprime-baremetal's TaskRunner takes one per task-table slot on

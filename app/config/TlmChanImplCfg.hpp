@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TlmChan keeps two copies (double buffer) of a hash table of telemetry
 // entries. F´'s default (500 buckets) is about half a megabyte; the kit has
 // fewer than 32 channels, and the bucket count must cover all of them.

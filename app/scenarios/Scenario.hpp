@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Scenario.hpp
 // \brief  What a run plays after setup: one scenario per build

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  assert.cpp
 // \brief  An F´ assert, injected by command

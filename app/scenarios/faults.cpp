@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  faults.cpp
 // \brief  Faults the system must survive, injected at run time: malformed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  load.cpp
 // \brief  The background-load sweep: where does each execution model break?

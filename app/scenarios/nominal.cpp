@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  nominal.cpp
 // \brief  The comparison run: the deployment at its nominal load for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  soak.cpp
 // \brief  A long run in virtual time: CONFIG_KIT_RUN_TICKS ticks in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  stack_overflow.cpp
 // \brief  A stack overflow, injected by command: the command dispatcher's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  TimedTask.hpp
 // \brief  fprime-baremetal's cooperative task, each slice timed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  PriorityMap.hpp
 // \brief  F´ task priority (higher is more urgent) -> Zephyr thread priority

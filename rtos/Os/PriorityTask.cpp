@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  PriorityTask.cpp
 // \brief  fprime-zephyr's task with the kit's priority mapping

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Controller.cpp
 // \brief  1 kHz filtered PI loop on a simulated plant

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ Latest state of the control loop, in sensor counts

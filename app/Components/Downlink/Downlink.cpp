@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Downlink.cpp
 // \brief  Event and telemetry packet sink

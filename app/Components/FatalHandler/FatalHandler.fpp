@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ Ends the run on a FATAL event: prints the event ID and stops the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  FatalHandler.hpp
 // \brief  Stops the system on a FATAL event

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ 10 Hz housekeeping: scrubs a configuration table in RAM a slice per

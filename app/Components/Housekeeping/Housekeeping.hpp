@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Housekeeping.hpp
 // \brief  10 Hz configuration-table scrub

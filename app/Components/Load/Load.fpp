@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ Background load: the lowest-priority work of the deployment, set at run

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Load.hpp
 // \brief  Background load, set at run time by command

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ 100 Hz monitor: checks the control error against a limit with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Monitor.hpp
 // \brief  100 Hz control-error monitor with persistence

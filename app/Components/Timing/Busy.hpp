@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Busy.hpp
 // \brief  Computation that lasts a given time: the load and fault injectors'

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  CycleStats.hpp
 // \brief  Running statistics of one timing metric, in board counter cycles

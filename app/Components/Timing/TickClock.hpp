@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  TickClock.hpp
 // \brief  The board tick as the timing probe sees it

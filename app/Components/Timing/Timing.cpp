@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Timing.cpp
 // \brief  Tick source and rate-group timing probe

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ Tick source of the rate groups and their timing probe. The variant's main

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Uplink.cpp
 // \brief  Scripted command uplink into the command dispatcher

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: Apache-2.0
+
 module Kit {
 
     @ Command uplink. Feeds raw command frames (F´ command packets: packet

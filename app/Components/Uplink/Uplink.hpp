@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Uplink.hpp
 // \brief  Scripted command uplink into the command dispatcher

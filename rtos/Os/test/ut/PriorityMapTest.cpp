@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // F´ priorities (higher is more urgent) onto Zephyr's (lower is more urgent),
 // with Zephyr's default 15 preemptive levels and the tick thread at 0.
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #include "app/Components/Controller/test/ut/ControllerTester.hpp"
 
 namespace Kit {

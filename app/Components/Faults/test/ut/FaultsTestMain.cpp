@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #include "app/Components/Faults/test/ut/FaultsTester.hpp"
 
 TEST(Faults, OverrunRunsOnceInItsRateGroup) {

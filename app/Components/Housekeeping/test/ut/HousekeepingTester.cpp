@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #include "app/Components/Housekeeping/test/ut/HousekeepingTester.hpp"
 
 namespace Kit {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #ifndef KIT_HOUSEKEEPINGTESTER_HPP
 #define KIT_HOUSEKEEPINGTESTER_HPP
 

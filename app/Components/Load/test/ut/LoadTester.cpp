@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #include "app/Components/Load/test/ut/LoadTester.hpp"
 #include "app/Components/Timing/test/ut/FakeTickClock.hpp"
 

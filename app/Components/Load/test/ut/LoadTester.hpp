@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #ifndef KIT_LOADTESTER_HPP
 #define KIT_LOADTESTER_HPP
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Arithmetic of the timing probe: statistics, deadlines, and the 32-bit
 // counter wrap (the 12 MHz cycle counter wraps every 358 s).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tick clock the test sets by hand (stands in for app/src/TickClock.cpp)
 #ifndef KIT_FAKETICKCLOCK_HPP
 #define KIT_FAKETICKCLOCK_HPP

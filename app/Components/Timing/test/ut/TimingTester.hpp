@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: Apache-2.0
+
 #ifndef KIT_TIMINGTESTER_HPP
 #define KIT_TIMINGTESTER_HPP
 
