@@ -17,7 +17,7 @@ from typing import Any, Callable
 
 import yaml
 
-from . import results, workspace
+from . import model, results, workspace
 from .workspace import VARIANTS, KitError, board_dir_name, board_folder, ported_boards
 
 REFERENCE_BOARD = "qemu_cortex_m3"
@@ -247,10 +247,10 @@ def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -
     short: list[str] = []
     short_of: set[str] = set()
     for variant in VARIANTS:
-        metrics = measured["variants"].get(variant, {}).get("metrics")
-        if metrics is None:
+        found = measured.variants.get(variant)
+        if found is None:
             raise KitError(f"{shown_as} has no {variant} variant to measure the deployment from")
-        need = {"flash": metrics["ROM (bytes)"], "RAM": metrics["RAM, static (bytes)"]}
+        need = {"flash": found.metrics[model.ROM], "RAM": found.metrics[model.RAM]}
         for what in ("flash", "RAM"):
             if need[what] > have[what]:
                 short.append(f"{variant} needs {need[what] / 1024:.1f} KiB of {what}, "

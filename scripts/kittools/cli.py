@@ -13,7 +13,7 @@ import json
 import sys
 from pathlib import Path
 
-from . import compare, conditions, modules, report, results, runner, testing
+from . import budget, compare, conditions, modules, report, results, runner, testing
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
 
@@ -61,7 +61,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
         results_file, board_passed = compare_board(board, out_dir / check_board(board))
         files.append(results_file)
         passed = passed and board_passed
-    outcome = report.write_from_files(files, out_dir, None, report.Budget(), _say)
+    outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())
     _say(f"results: {', '.join(str(f) for f in files)}")
@@ -69,8 +69,8 @@ def cmd_compare(args: argparse.Namespace) -> int:
     return 0 if passed else 1
 
 
-def _budget(args: argparse.Namespace) -> report.Budget:
-    return report.Budget(rom_pct=args.rom_budget, ram_pct=args.ram_budget, p99_pct=args.p99_budget)
+def _budget(args: argparse.Namespace) -> budget.Budget:
+    return budget.Budget(rom_pct=args.rom_budget, ram_pct=args.ram_budget, p99_pct=args.p99_budget)
 
 
 def cmd_report(args: argparse.Namespace) -> int:
@@ -157,9 +157,9 @@ def parser() -> argparse.ArgumentParser:
     n.add_argument("--force", action="store_true", help="write the board's folder again if it exists")
     n.set_defaults(func=cmd_new_board)
     for command in (r, t):
-        command.add_argument("--rom-budget", type=float, default=report.Budget.rom_pct, help="allowed ROM growth, %%")
-        command.add_argument("--ram-budget", type=float, default=report.Budget.ram_pct, help="allowed RAM growth, %%")
-        command.add_argument("--p99-budget", type=float, default=report.Budget.p99_pct,
+        command.add_argument("--rom-budget", type=float, default=budget.Budget.rom_pct, help="allowed ROM growth, %%")
+        command.add_argument("--ram-budget", type=float, default=budget.Budget.ram_pct, help="allowed RAM growth, %%")
+        command.add_argument("--p99-budget", type=float, default=budget.Budget.p99_pct,
                              help="allowed p99 growth, %% (changes under 2 us never count)")
     return top
 

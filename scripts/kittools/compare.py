@@ -1,13 +1,15 @@
 """The variants' runs as comparable numbers (metrics) and as the results file
-(as_json, docs/results.md); kittools.report renders them."""
+(results / as_json, docs/results.md); kittools.report renders them."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from typing import Any
 
+from . import model
 from .console import Run
 from .footprint import Footprint
+from .model import MetricId
 
 
 @dataclass(frozen=True)
@@ -26,29 +28,29 @@ def _us(cycles: int, cycles_hz: int) -> float:
     return cycles * 1e6 / cycles_hz
 
 
-def metrics(data: VariantData) -> dict[str, float]:
-    """Flat metric name -> value for one variant (bytes, microseconds, counts)."""
+def metrics(data: VariantData) -> dict[MetricId, float]:
+    """Metric -> value for one variant (bytes, microseconds, counts, percent)."""
     run = data.run
     cycles_hz = run.one("BANNER").int("cycles_hz")
-    values: dict[str, float] = {
-        "ROM (bytes)": data.footprint.rom,
-        "RAM, static (bytes)": data.footprint.ram,
+    values: dict[MetricId, float] = {
+        model.ROM: data.footprint.rom,
+        model.RAM: data.footprint.ram,
     }
     if run.of_kind("HEAP"):
         heap = run.one("HEAP")
-        values["heap, F´ allocator peak (bytes)"] = heap.int("fprime_peak")
-        values["heap, all users (bytes requested)"] = heap.int("bytes")
+        values[model.HEAP_FPRIME_PEAK] = heap.int("fprime_peak")
+        values[model.HEAP_REQUESTED] = heap.int("bytes")
     stacks = run.of_kind("STACK")
-    values["stacks reserved (bytes)"] = sum(s.int("size") for s in stacks)
-    values["stacks used, peak (bytes)"] = sum(s.int("used") for s in stacks)
+    values[model.STACKS_RESERVED] = sum(s.int("size") for s in stacks)
+    values[model.STACKS_USED] = sum(s.int("used") for s in stacks)
     for rg in run.of_kind("RG"):
         name = rg.fields["name"]
-        for metric, label in (("latency", "latency"), ("exec", "exec"), ("jitter", "period error")):
-            for stat in ("p50", "p99", "max"):
-                values[f"{name} {label} {stat} (us)"] = _us(rg.int(f"{metric}_{stat}"), cycles_hz)
-        values[f"{name} slips"] = rg.int("slips")
+        for quantity in model.RG_QUANTITIES:
+            for stat in model.STATS:
+                values[model.rg_metric(name, quantity, stat)] = _us(rg.int(f"{quantity}_{stat}"), cycles_hz)
+        values[model.slips(name)] = rg.int("slips")
     for task in run.of_kind("TASK"):
-        values[f"{task.fields['name']} CPU share (%)"] = task.int("cpu_permille") / 10
+        values[model.cpu_share(task.fields["name"])] = task.int("cpu_permille") / 10
     return values
 
 
@@ -58,24 +60,22 @@ def conditions(data: VariantData) -> dict[str, str]:
     return {k: banner[k] for k in keys if k in banner}
 
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = model.SCHEMA_VERSION
 
 
-def as_json(results: list[VariantData]) -> dict[str, Any]:
+def results(found: list[VariantData]) -> model.Results:
+    """The results of the variants' runs on one board."""
+    return model.Results(conditions(found[0]), {
+        d.variant: model.Variant(
+            passed=d.run.passed, metrics=metrics(d),
+            records=[{"kind": r.kind, **r.fields} for r in d.run.records],
+            build=dict(d.build), modules={"rom": d.rom_modules, "ram": d.ram_modules},
+            footprint={"rom": d.footprint.rom, "ram": d.footprint.ram,
+                       "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size})
+        for d in found
+    })
+
+
+def as_json(found: list[VariantData]) -> dict[str, Any]:
     """The results file; its schema is documented in docs/results.md."""
-    return {
-        "schema_version": SCHEMA_VERSION,
-        "conditions": conditions(results[0]),
-        "variants": {
-            d.variant: {
-                "passed": d.run.passed,
-                "build": d.build,
-                "modules": {"rom": d.rom_modules, "ram": d.ram_modules},
-                "footprint": {"rom": d.footprint.rom, "ram": d.footprint.ram,
-                              "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size},
-                "metrics": metrics(d),
-                "records": [{"kind": r.kind, **r.fields} for r in d.run.records],
-            }
-            for d in results
-        },
-    }
+    return results(found).to_json()

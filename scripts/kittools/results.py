@@ -9,14 +9,16 @@ import json
 from pathlib import Path
 from typing import Any
 
-from . import compare, conditions, console, modules
+from . import compare, conditions, console, model, modules
 from .footprint import measure
 from .workspace import KitError
 
-REQUIRED_METRICS = ("ROM (bytes)", "RAM, static (bytes)")
+REQUIRED_METRICS = (model.ROM, model.RAM)
+#: Schemas this kit reads: the current one, and 1 (upgraded on load: metric keys were labels)
+READABLE_SCHEMAS = (1, model.SCHEMA_VERSION)
 
 
-def load(path: Path) -> dict[str, Any]:
+def load(path: Path) -> model.Results:
     """The results in `path`; KitError naming what is wrong if it is not a results file."""
     if not path.is_file():
         raise KitError(f"results file {path} does not exist (kit compare writes build/compare/comparison.json)")
@@ -24,34 +26,46 @@ def load(path: Path) -> dict[str, Any]:
         data = json.loads(path.read_text())
     except json.JSONDecodeError as error:
         raise KitError(f"results file {path} is not valid JSON: {error}") from error
+    return parse(data, str(path))
+
+
+def parse(data: Any, path: str = "results") -> model.Results:
+    """Results from a results file's JSON; KitError naming what is wrong."""
     if not isinstance(data, dict):
         raise KitError(f"results file {path}: expected a JSON object, found {type(data).__name__}")
-    if data.get("schema_version") != compare.SCHEMA_VERSION:
+    if data.get("schema_version") not in READABLE_SCHEMAS:
         raise KitError(f"results file {path}: schema_version {data.get('schema_version')!r}, "
-                       f"this kit reads {compare.SCHEMA_VERSION} (docs/results.md)")
+                       f"this kit reads {' and '.join(map(str, READABLE_SCHEMAS))} (docs/results.md)")
     variants = data.get("variants")
     if not isinstance(variants, dict) or not variants:
         raise KitError(f"results file {path}: no 'variants'")
     for name, variant in variants.items():
         if not isinstance(variant, dict):
             raise KitError(f"results file {path}: variant '{name}' is not an object")
-        metrics = variant.get("metrics")
-        if not isinstance(metrics, dict):
+        if not isinstance(variant.get("metrics"), dict):
             raise KitError(f"results file {path}: variant '{name}' has no 'metrics'")
-        for key in REQUIRED_METRICS:
-            if not isinstance(metrics.get(key), (int, float)):
-                raise KitError(f"results file {path}: variant '{name}' lacks the metric '{key}'")
-        if not isinstance(variant.get("records"), list):
-            raise KitError(f"results file {path}: variant '{name}' has no 'records'")
+        if not isinstance(variant.get("records", []), list):
+            raise KitError(f"results file {path}: variant '{name}': 'records' is not a list")
     if not isinstance(data.get("conditions"), dict):
         raise KitError(f"results file {path}: no 'conditions'")
-    return data
+    try:
+        if data["schema_version"] == 1:
+            data = model.upgrade_v1(data)
+        results = model.Results.from_json(data)
+    except (ValueError, TypeError, AttributeError) as error:
+        raise KitError(f"results file {path}: {error}") from error
+    for name, variant in results.variants.items():
+        for metric in REQUIRED_METRICS:
+            if variant.metric(metric) is None:
+                raise KitError(f"results file {path}: variant '{name}' lacks the metric '{metric.key}' "
+                               f"({metric.label})")
+    return results
 
 
-def records_of(variant: dict[str, Any]) -> console.Run:
+def records_of(variant: model.Variant) -> console.Run:
     """The console records of a variant, back as a Run."""
     run = console.Run()
-    for record in variant["records"]:
+    for record in variant.records:
         fields = {k: str(v) for k, v in record.items() if k != "kind"}
         run.records.append(console.Record(str(record["kind"]), fields))
     return run
@@ -83,7 +97,7 @@ def _recorded(suite: dict[str, Any]) -> console.Run:
     return run
 
 
-def from_twister(twister_out: Path, board: str) -> dict[str, Any]:
+def from_twister(twister_out: Path, board: str) -> model.Results:
     """Results of a twister run of tests/deployment on one board, in the
     results-file schema: the nominal scenario's records (kit.deployment.*),
     footprint and modules from its build, plus the sweep records of the load
@@ -111,4 +125,4 @@ def from_twister(twister_out: Path, board: str) -> dict[str, Any]:
     if not found:
         raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario for {board}")
     found.sort(key=lambda d: d.variant)
-    return compare.as_json(found)
+    return compare.results(found)

@@ -9,7 +9,8 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import console, report, results, runner
+from . import budget, console, results, runner
+from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
@@ -109,30 +110,44 @@ def check_determinism(log_dir: Path) -> Tally:
 BASELINES = KIT_ROOT / "tests" / "baselines"
 
 
-def check_budget(board: str, log_dir: Path, budget: "report.Budget", update_baseline: bool = False) -> Tally:
+def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseline: bool = False) -> Tally:
     """Results of this twister run on `board` against its committed baseline
-    (tests/baselines/<board folder>.json): ROM, RAM, p99 and slips budgets.
-    update_baseline: make this run the baseline instead (review the diff).
-    Writes <log_dir>/<board folder>/results.json and its report."""
+    (tests/baselines/<board folder>.json): ROM, RAM, p99 and slips budgets,
+    decided by kittools.budget from the metrics alone.
+    update_baseline: make this run the baseline instead (conditions and
+    metrics, no raw records; review the diff).
+    Writes <log_dir>/<board folder>/results.json, then its report."""
     folder = check_board(board)
     baseline_path = BASELINES / f"{folder}.json"
     data = results.from_twister(TWISTER_OUT, board)
     out_dir = log_dir / folder
     out_dir.mkdir(parents=True, exist_ok=True)
     current = out_dir / "results.json"
-    current.write_text(json.dumps(data, indent=2) + "\n")
+    current.write_text(json.dumps(data.to_json(), indent=2) + "\n")
     if update_baseline:
-        baseline_path.parent.mkdir(parents=True, exist_ok=True)
-        baseline_path.write_text(json.dumps(data, indent=2) + "\n")
+        write_baseline(data, baseline_path)
         print(f"[kit]   baseline written: {baseline_path}", flush=True)
     if not baseline_path.is_file():
         raise KitError(f"no baseline for {board} ({baseline_path}): run `scripts/kit test --board {board} "
                        "--update-baseline` once and commit the file")
-    outcome = report.write(data, out_dir / "report", results.load(baseline_path), budget)
-    for violation in outcome.violations:
+    baseline = results.load(baseline_path)
+    verdict = budget.check(data, baseline, limits)
+    for violation in verdict.violations:
         print(f"[kit]   budget: {violation}", flush=True)
+    tally = Tally(passed=1) if verdict.passed else Tally(failed=1)
+    # The report is for the reader; the verdict above does not depend on it
+    from . import report
+
+    report.write(data, out_dir / "report", baseline, limits)
     print(f"[kit]   {board}: report against {baseline_path.name}: {out_dir / 'report' / 'report.html'}", flush=True)
-    return Tally(passed=1) if not outcome.violations else Tally(failed=1)
+    return tally
+
+
+def write_baseline(data: Results, path: Path) -> None:
+    """A board's baseline: the conditions and every variant's metrics (with
+    its build, modules and footprint), not the raw console records."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(data.to_json(with_records=False), indent=2) + "\n")
 
 
 def gtest_tally(path: Path) -> Tally:

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from kittools import board, cli, compare, workspace
+from kittools import board, cli, compare, model, workspace
 from kittools.workspace import KitError
 
 SUITE = """# the suite
@@ -85,7 +85,7 @@ def _zephyr(tmp_path: Path, version: bool = True) -> Path:
 def _results(footprint: dict[str, tuple[int, int]]) -> dict:
     """A minimal results file (docs/results.md) holding just a footprint."""
     return {"schema_version": compare.SCHEMA_VERSION, "conditions": {},
-            "variants": {v: {"metrics": {"ROM (bytes)": rom, "RAM, static (bytes)": ram}, "records": []}
+            "variants": {v: {"metrics": {model.ROM.key: rom, model.RAM.key: ram}, "records": []}
                          for v, (rom, ram) in footprint.items()}}
 
 

@@ -3,19 +3,19 @@ import json
 
 import pytest
 
-from kittools import compare, console, report, results
+from kittools import analysis, budget, compare, console, model, report, results
 from kittools.footprint import Footprint
 from kittools.workspace import KitError
 from sample_console import console_log
 
 
-def _results(**rtos_kwargs) -> dict:
+def _results(**rtos_kwargs) -> model.Results:
     def data(variant, rom, ram, **kwargs):
         return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536),
                                    console.parse(console_log(variant, **kwargs)),
                                    {"F´ framework": 20000, "libc (picolibc, libgcc)": 9000},
                                    {"F´ framework": 70, "libc (picolibc, libgcc)": 200})
-    return compare.as_json([data("baremetal", 96000, 30000), data("rtos", 102000, 42000, **rtos_kwargs)])
+    return compare.results([data("baremetal", 96000, 30000), data("rtos", 102000, 42000, **rtos_kwargs)])
 
 
 def _write(tmp_path, name, data) -> object:
@@ -34,18 +34,22 @@ def test_malformed_results_are_explained(tmp_path):
     bad.write_text("{not json")
     with pytest.raises(KitError, match="not valid JSON"):
         results.load(bad)
-    broken = _results()
-    del broken["variants"]["rtos"]["metrics"]["ROM (bytes)"]
-    with pytest.raises(KitError, match="lacks the metric 'ROM \\(bytes\\)'"):
+    broken = _results().to_json()
+    del broken["variants"]["rtos"]["metrics"]["footprint.rom.bytes"]
+    with pytest.raises(KitError, match="lacks the metric 'footprint.rom.bytes' \\(ROM \\(bytes\\)\\)"):
         results.load(_write(tmp_path, "broken.json", broken))
-    old = _results()
+    unknown = _results().to_json()
+    unknown["variants"]["rtos"]["metrics"]["ROM, total"] = 1
+    with pytest.raises(KitError, match="not a metric key: 'ROM, total'"):
+        results.load(_write(tmp_path, "unknown.json", unknown))
+    old = _results().to_json()
     old["schema_version"] = 0
     with pytest.raises(KitError, match="schema_version"):
         results.load(_write(tmp_path, "old.json", old))
 
 
 def test_findings_are_generated_from_the_numbers():
-    text = report.findings(_results())
+    text = analysis.findings(_results())
     assert "rtos uses 5.9 KiB (6.2%) more ROM than baremetal (99.6 KiB vs 93.8 KiB)." in text.lines
     assert any(line.startswith("rg1kHz: p99 dispatch latency") for line in text.lines)
     assert text.lines[-1] == "Run verdicts: baremetal PASS, rtos PASS."
@@ -64,6 +68,7 @@ def test_outputs_are_written_and_the_html_is_self_contained(tmp_path):
 def test_budget_passes_on_the_baseline_itself(tmp_path):
     data = _results()
     outcome = report.write(data, tmp_path, baseline=copy.deepcopy(data))
+    assert budget.check(data, copy.deepcopy(data)).passed
     assert outcome.violations == []
     assert "Budget check: PASS" in (tmp_path / "report.md").read_text()
 
@@ -71,10 +76,11 @@ def test_budget_passes_on_the_baseline_itself(tmp_path):
 def test_budget_fails_on_a_worsened_run(tmp_path):
     baseline = _results()
     worse = copy.deepcopy(baseline)
-    worse["variants"]["rtos"]["metrics"]["ROM (bytes)"] *= 1.05        # +5% ROM
-    worse["variants"]["rtos"]["metrics"]["rg1kHz latency p99 (us)"] += 20  # p99 regression
-    worse["variants"]["baremetal"]["metrics"]["rg1kHz slips"] = 3
+    worse.variants["rtos"].metrics[model.ROM] *= 1.05                              # +5% ROM
+    worse.variants["rtos"].metrics[model.rg_metric("rg1kHz", "latency", "p99")] += 20  # p99 regression
+    worse.variants["baremetal"].metrics[model.slips("rg1kHz")] = 3
     outcome = report.write(worse, tmp_path, baseline=baseline)
+    assert outcome.violations == budget.check(worse, baseline).violations
     assert len(outcome.violations) == 3
     assert any("ROM (bytes)" in v and "over budget" in v for v in outcome.violations)
     assert any("latency p99" in v and "regressed" in v for v in outcome.violations)
@@ -84,5 +90,5 @@ def test_budget_fails_on_a_worsened_run(tmp_path):
 def test_small_p99_changes_are_not_regressions(tmp_path):
     baseline = _results()
     noisy = copy.deepcopy(baseline)
-    noisy["variants"]["rtos"]["metrics"]["rg1kHz period error p99 (us)"] += 1.5  # +150% but under 2 us
+    noisy.variants["rtos"].metrics[model.rg_metric("rg1kHz", "jitter", "p99")] += 1.5  # +150% but under 2 us
     assert report.write(noisy, tmp_path, baseline=baseline).violations == []

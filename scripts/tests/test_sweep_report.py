@@ -1,7 +1,7 @@
 """The load sweep in the report: parsed from SWEEP/BREAK records, breaking
 points computed and cross-checked, plots and guidance generated."""
 
-from kittools import compare, console, report, sweep
+from kittools import analysis, compare, console, model, report, sweep
 from kittools.footprint import Footprint
 from sample_console import console_log
 
@@ -28,19 +28,19 @@ def sweep_lines(variant: str, breaks_at: int | None, say_break: int | None | str
     return lines
 
 
-def results(baremetal_says: int | None | str = "same", with_sweep: bool = True) -> dict:
+def results(baremetal_says: int | None | str = "same", with_sweep: bool = True) -> model.Results:
     def data(variant: str, rom: int, ram: int, breaks_at: int | None, says: int | None | str) -> compare.VariantData:
         text = console_log(variant)
         if with_sweep:
             text += "\n" + "\n".join(sweep_lines(variant, breaks_at, says))
         return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536), console.parse(text))
-    return compare.as_json([data("baremetal", 96000, 30000, 1000, baremetal_says),
+    return compare.results([data("baremetal", 96000, 30000, 1000, baremetal_says),
                             data("rtos", 102000, 42000, None, "same")])
 
 
 def test_points_and_breaking_points_come_from_the_records():
     data = results()
-    parsed = sweep.of_records(data["variants"]["baremetal"]["records"])
+    parsed = sweep.of_records(data.variants["baremetal"].records)
     assert parsed is not None
     assert parsed.axes() == ["slice"] and parsed.rate_groups() == ["rg1kHz", "rg100Hz"]
     assert [p.load_us for p in parsed.series("slice", "rg1kHz")] == [0, 500, 1000, 1500, 2000]
@@ -51,21 +51,22 @@ def test_points_and_breaking_points_come_from_the_records():
 
 def test_a_break_line_that_disagrees_with_the_points_is_reported():
     data = results(baremetal_says=1500)
-    parsed = sweep.of_records(data["variants"]["baremetal"]["records"])
+    parsed = sweep.of_records(data.variants["baremetal"].records)
     assert parsed.inconsistencies() == ["slice rg1kHz: BREAK says 1500 µs, the points say 1000 µs"]
-    guidance = report.sweep_guidance(data, report._sweeps(data))
+    guidance = analysis.sweep_guidance(data, analysis.sweeps(data))
     assert "baremetal: inconsistent sweep record: slice rg1kHz: BREAK says 1500 µs, the points say 1000 µs" \
         in guidance.lines
 
 
 def test_guidance_is_generated_from_the_numbers():
     data = results()
-    lines = report.sweep_guidance(data, report._sweeps(data)).lines
+    lines = analysis.sweep_guidance(data, analysis.sweeps(data)).lines
     assert lines[0] == ("baremetal, slice load: rg1kHz misses deadlines from 1000 µs (100% of the 1000 µs period); "
                         "its p99 latency starts to grow at 500 µs, from 60.0 µs to 310.0 µs just below the break.")
     assert lines[1] == ("rtos, slice load: no rate group missed a deadline up to 2000 µs (2.0x the fastest "
                         "period); rg1kHz p99 latency stayed within 60.0-60.0 µs.")
-    assert lines[-1].startswith("What rtos costs against baremetal at zero load: ROM +6,000 B, static RAM +12,000 B")
+    assert lines[-1] == ("What rtos costs against baremetal at zero load: ROM +6,000 B, static RAM +12,000 B, "
+                         "reserved stack +0 B, 1,000 context switches per second.")
 
 
 def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
@@ -86,7 +87,7 @@ def test_no_sweep_section_without_sweep_records(tmp_path):
 def test_several_boards_are_reported_side_by_side(tmp_path):
     first = results()
     second = results()
-    second["conditions"]["board"] = "mps2/an385"
+    second.conditions["board"] = "mps2/an385"
     outcome = report.write_boards([first, second], tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "| metric | qemu_cortex_m3 baremetal | qemu_cortex_m3 rtos | mps2/an385 baremetal | mps2/an385 rtos |" \

@@ -1,0 +1,140 @@
+"""What the numbers say: findings, the load sweep's breaking points and
+knees, and the guidance drawn from them. Every sentence is generated from
+the results; nothing here draws or renders."""
+
+from __future__ import annotations
+
+from . import model, sweep
+from .document import CAVEAT, Text, fmt, kib
+from .model import Results
+
+#: The knee of a sweep: the first load at which the fastest group's p99 is this much over its zero-load value
+KNEE_FACTOR = 1.1
+
+
+def conditions_text(data: Results) -> Text:
+    c = data.conditions
+    lines = [f"Board {c.get('board')}; kit {c.get('kit')}; Zephyr {c.get('zephyr')}; F´ {c.get('fprime')}.",
+             f"Rate-group tick {c.get('tick_hz')} Hz, system clock {c.get('sys_tick_hz')} Hz, cycle counter "
+             f"{c.get('cycles_hz')} Hz, QEMU icount shift {c.get('icount_shift')}, run of {c.get('run_ticks')} ticks."]
+    for name in data.names():
+        build = data.variants[name].build
+        if build.get("toolchain"):
+            lines.append(f"{name}: {build['toolchain']}.")
+    lines.append(CAVEAT)
+    return Text("Conditions", lines)
+
+
+def findings(data: Results) -> Text:
+    """'What the numbers say', generated from them."""
+    names = data.names()
+    lines: list[str] = []
+    if len(names) == 2:
+        a, b = names
+        va_, vb_ = data.variants[a], data.variants[b]
+        for what, metric in (("ROM", model.ROM), ("static RAM", model.RAM)):
+            va, vb = va_.metric(metric), vb_.metric(metric)
+            if va and vb is not None:
+                delta = vb - va
+                more = "more" if delta >= 0 else "less"
+                lines.append(f"{b} uses {kib(abs(delta))} ({abs(delta) / va * 100:.1f}%) {more} {what} than {a} "
+                             f"({kib(vb)} vs {kib(va)}).")
+        sa, sb = va_.metric(model.STACKS_RESERVED), vb_.metric(model.STACKS_RESERVED)
+        if sa is not None and sb is not None:
+            lines.append(f"Stacks reserved: {a} {fmt(sa)} B, {b} {fmt(sb)} B.")
+        rate_groups = sorted({m.name for m in va_.metrics if m.quantity == "slips"})
+        for rg in rate_groups:
+            la, lb = va_.metric(model.rg_metric(rg, "latency", "p99")), vb_.metric(model.rg_metric(rg, "latency", "p99"))
+            slipped = {v: data.variants[v].metric(model.slips(rg)) for v in names}
+            if la is None or lb is None:
+                continue
+            lower = a if la <= lb else b
+            lines.append(f"{rg}: p99 dispatch latency {a} {la:.1f} µs, {b} {lb:.1f} µs: {lower} is lower by "
+                         f"{abs(la - lb):.1f} µs; slips {a} {fmt(slipped[a])}, {b} {fmt(slipped[b])}.")
+        for v in names:
+            idle = [r for r in data.variants[v].of_kind("CPU") if r.get("name") == "idle"]
+            if idle:
+                lines.append(f"{v} idles {int(idle[0]['cpu_permille']) / 10:.1f}% of the run.")
+    verdicts = ", ".join(f"{v} {'PASS' if data.variants[v].passed else 'FAIL'}" for v in names)
+    lines.append(f"Run verdicts: {verdicts}.")
+    return Text("What the numbers say", lines)
+
+
+def sweeps(data: Results) -> dict[str, sweep.Sweep]:
+    """Each variant's background-load sweep, for those that have one."""
+    found = {}
+    for name in data.names():
+        parsed = sweep.of_records(data.variants[name].records)
+        if parsed is not None:
+            found[name] = parsed
+    return found
+
+
+def fastest_period_us(data: Results) -> float:
+    """Period of the fastest rate group, in µs (the tick's)."""
+    tick_hz = data.condition("tick_hz")
+    return 1e6 / tick_hz if tick_hz > 0 else 0.0
+
+
+def break_text(value: int | None, max_us: int) -> str:
+    return f"{value} µs" if value is not None else f"none up to {max_us} µs"
+
+
+def knee(p99_us: list[float], series: list[sweep.Point]) -> int | None:
+    """The first load at which the p99 is KNEE_FACTOR over its zero-load value."""
+    return next((p.load_us for q, p in zip(p99_us, series) if q > p99_us[0] * KNEE_FACTOR), None)
+
+
+def switches_per_second(data: Results, variant: str) -> float | None:
+    """Scheduling windows per second of the threads (KIT CPU runs, idle left
+    out), when the variant's tasks are threads (TASK context=thread):
+    cooperative slices of one loop are not context switches."""
+    found = data.variants[variant]
+    records = [r for r in found.of_kind("CPU") if r.get("name") != "idle"]
+    ticks, tick_hz = data.condition("run_ticks"), data.condition("tick_hz")
+    if not records or ticks <= 0 or tick_hz <= 0 or found.context_kind() != "thread":
+        return None
+    return sum(int(r["runs"]) for r in records) / (ticks / tick_hz)
+
+
+def sweep_guidance(data: Results, found: dict[str, sweep.Sweep]) -> Text:
+    """What the sweep says, generated from its points."""
+    cycles_hz = data.condition("cycles_hz")
+    period = fastest_period_us(data)
+    lines: list[str] = []
+    for v in sorted(found):
+        sw = found[v]
+        fastest = sw.rate_groups()[0]
+        for axis in sw.axes():
+            breaks = [(b, rg) for rg in sw.rate_groups() if (b := sw.breaking_point(axis, rg)) is not None]
+            series = sw.series(axis, fastest)
+            p99 = [p.latency_p99 * 1e6 / cycles_hz for p in series]
+            at = knee(p99, series)
+            grows = f"; its p99 latency starts to grow at {at} µs" if at is not None else ""
+            if breaks:
+                load, rg = min(breaks)
+                before = [q for q, p in zip(p99, series) if p.load_us < load]
+                grow = (f", from {before[0]:.1f} µs to {before[-1]:.1f} µs just below the break"
+                        if before and at is not None else "")
+                share = f" ({load / period * 100:.0f}% of the {period:.0f} µs period)" if period else ""
+                lines.append(f"{v}, {axis} load: {rg} misses deadlines from {load} µs{share}{grows}{grow}.")
+            else:
+                most = sw.max_load(axis)
+                times = f" ({most / period:.1f}x the fastest period)" if period else ""
+                lines.append(f"{v}, {axis} load: no rate group missed a deadline up to {most} µs{times}; "
+                             f"{fastest} p99 latency stayed within {min(p99):.1f}-{max(p99):.1f} µs{grows}.")
+        lines += [f"{v}: inconsistent sweep record: {text}" for text in sw.inconsistencies()]
+    names = data.names()
+    if len(names) == 2:
+        a, b = names
+        costs = []
+        for what, metric in (("ROM", model.ROM), ("static RAM", model.RAM), ("reserved stack", model.STACKS_RESERVED)):
+            va, vb = data.variants[a].metric(metric), data.variants[b].metric(metric)
+            if va is not None and vb is not None:
+                costs.append(f"{what} {vb - va:+,.0f} B")
+        switches = switches_per_second(data, b)
+        if switches is not None:
+            costs.append(f"{switches:,.0f} context switches per second")
+        if costs:
+            lines.append(f"What {b} costs against {a} at zero load: {', '.join(costs)}.")
+    return Text("Background load: what the sweep says", lines)

@@ -1,0 +1,100 @@
+"""The budget gate: a board's results against its baseline.
+
+ROM or static RAM more than +2%, a p99 more than +10% and over 2 µs, or any
+new slip fails it (the limits are options). It decides from the metrics
+alone: no report is rendered, and no plotting or templating library is
+imported here or by what it imports.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from . import model
+from .model import MetricId, Results
+
+
+@dataclass
+class Budget:
+    """Allowed growth against a baseline, per variant."""
+
+    rom_pct: float = 2.0
+    ram_pct: float = 2.0
+    p99_pct: float = 10.0
+    p99_floor_us: float = 2.0  # smaller changes of a p99 are never a regression
+
+    def describe(self) -> str:
+        return (f"ROM +{self.rom_pct:.1f}%, RAM +{self.ram_pct:.1f}%, p99 +{self.p99_pct:.0f}% above "
+                f"{self.p99_floor_us:.0f} µs allowed")
+
+
+@dataclass(frozen=True)
+class Change:
+    """One metric of one variant that differs from the baseline (or breaks the budget)."""
+
+    variant: str
+    metric: MetricId
+    before: float
+    now: float
+    verdict: str  # empty: within budget
+
+    @property
+    def delta(self) -> float:
+        return self.now - self.before
+
+    @property
+    def pct(self) -> float:
+        if self.before:
+            return self.delta / self.before * 100
+        return 0.0 if self.delta == 0 else float("inf")
+
+
+@dataclass
+class Verdict:
+    changes: list[Change] = field(default_factory=list)
+    violations: list[str] = field(default_factory=list)
+
+    @property
+    def passed(self) -> bool:
+        return not self.violations
+
+
+def _fmt(value: float) -> str:
+    return f"{value:,.0f}" if float(value).is_integer() else f"{value:,.1f}"
+
+
+def judge(metric: MetricId, before: float, now: float, budget: Budget) -> str:
+    """Why this change breaks the budget, or '' if it does not."""
+    delta = now - before
+    pct = (delta / before * 100) if before else (0.0 if delta == 0 else float("inf"))
+    if metric in (model.ROM, model.RAM):
+        limit = budget.rom_pct if metric == model.ROM else budget.ram_pct
+        if pct > limit:
+            return f"over budget (+{pct:.1f}% > {limit}%)"
+    elif metric.stat == "p99" and metric.unit == "us":
+        if delta > budget.p99_floor_us and pct > budget.p99_pct:
+            return f"regressed (+{pct:.1f}% > {budget.p99_pct}%)"
+    elif metric.quantity == "slips" and now > before:
+        return "more slips"
+    return ""
+
+
+def check(data: Results, baseline: Results, budget: Budget | None = None) -> Verdict:
+    """Every variant's metrics against the baseline's."""
+    budget = budget or Budget()
+    verdict = Verdict()
+    for name in data.names():
+        old = baseline.variants.get(name)
+        if old is None:
+            verdict.violations.append(f"{name}: not in the baseline")
+            continue
+        for metric, value in data.variants[name].metrics.items():
+            now, before = data.variants[name].metric(metric), old.metric(metric)
+            if now is None or before is None:
+                continue
+            why = judge(metric, before, now, budget)
+            if why:
+                verdict.violations.append(f"{name} {metric.label}: {_fmt(before)} -> {_fmt(now)}, {why}")
+            if now != before or why:
+                verdict.changes.append(Change(name, metric, before, now, why))
+    return verdict

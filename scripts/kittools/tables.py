@@ -1,0 +1,141 @@
+"""The report's tables, built from the results (labels from kittools.model)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from . import model, sweep
+from .analysis import break_text, sweeps
+from .budget import Budget, Verdict
+from .document import Table, Text
+from .model import Results
+
+#: The metrics of the boards-side-by-side table, before every rate group's p99 latency and slips
+BOARD_METRICS = (model.ROM, model.RAM, model.STACKS_RESERVED, model.STACKS_USED, model.HEAP_FPRIME_PEAK)
+
+
+def metrics_table(data: Results) -> Table:
+    names = data.names()
+    rows = []
+    for metric in data.variants[names[0]].metrics:
+        values = [data.variants[v].metric(metric) for v in names]
+        row: list[Any] = [metric.label] + [v if v is not None else "" for v in values]
+        if len(names) == 2 and values[0] is not None and values[1] is not None:
+            row.append(values[1] - values[0])
+        rows.append(row)
+    columns = ["metric"] + names + ([f"{names[1]} − {names[0]}"] if len(names) == 2 else [])
+    return Table("Side by side", columns, rows)
+
+
+def modules_table(data: Results) -> Table | None:
+    names = data.names()
+    rom = {v: data.variants[v].modules.get("rom", {}) for v in names}
+    ram = {v: data.variants[v].modules.get("ram", {}) for v in names}
+    if not all(rom.values()):
+        return None
+    layers = list(rom[names[0]])
+    rows: list[list[Any]] = [[layer] + [rom[v].get(layer, 0) for v in names] + [ram[v].get(layer, 0) for v in names]
+                             for layer in layers]
+    rows.append(["total"] + [sum(rom[v].values()) for v in names] + [sum(ram[v].values()) for v in names])
+    return Table("ROM and RAM by module (bytes; Zephyr rom_report / ram_report, sorted into layers)",
+                 ["module"] + [f"ROM {v}" for v in names] + [f"RAM {v}" for v in names], rows)
+
+
+def _cell(value: Any, key: str) -> Any:
+    if value is None:
+        return ""
+    if key == "cpu_permille":
+        return int(value) / 10
+    try:
+        return int(str(value), 0)
+    except (TypeError, ValueError):
+        return value
+
+
+def record_table(data: Results, kind: str, title: str, columns: list[tuple[str, str]]) -> Table | None:
+    rows = []
+    for v in data.names():
+        for r in data.variants[v].of_kind(kind):
+            rows.append([v] + [_cell(r.get(key), key) for key, _ in columns])
+    return Table(title, ["variant"] + [label for _, label in columns], rows) if rows else None
+
+
+def record_tables(data: Results) -> list[Table]:
+    """Tasks, CPU per execution context, stacks and the probe's cost, as recorded."""
+    found = (
+        record_table(data, "TASK", "Rate groups as tasks (counter cycles)",
+                     [("name", "task"), ("context", "context"), ("runs", "runs"), ("exec_avg", "exec avg"),
+                      ("exec_max", "exec max"), ("late", "late"), ("cpu_permille", "CPU %")]),
+        record_table(data, "CPU", "CPU by execution context (threads, or cooperative slices of one loop, as the "
+                                  "TASK context says)",
+                     [("name", "context"), ("runs", "runs"), ("avg", "avg"), ("max", "max"),
+                      ("cpu_permille", "CPU %")]),
+        record_table(data, "STACK", "Stacks (bytes)", [("name", "stack"), ("size", "size"), ("used", "used")]),
+        record_table(data, "PROBE", "Instrumentation cost (counter cycles per rate-group cycle)",
+                     [("cycles_per_cycle", "cycles")]),
+    )
+    return [t for t in found if t is not None]
+
+
+def budget_sections(verdict: Verdict, budget: Budget) -> list[Table | Text]:
+    """The budget check's verdict and the changed metrics."""
+    text = ([f"Budget check: PASS ({budget.describe()})."] if verdict.passed
+            else ["Budget check: FAIL"] + verdict.violations)
+    rows: list[list[Any]] = [[c.variant, c.metric.label, c.before, c.now, c.delta,
+                              f"{c.pct:+.1f}%" if c.pct != float("inf") else "new", c.verdict]
+                             for c in verdict.changes]
+    return [Text("Budget", text),
+            Table("Against the baseline (changed metrics)",
+                  ["variant", "metric", "baseline", "now", "delta", "change", "budget"], rows)]
+
+
+def breaking_points_table(found: dict[str, sweep.Sweep]) -> Table:
+    names = sorted(found)
+    first = found[names[0]]
+    rows = []
+    for axis in first.axes():
+        for rg in first.rate_groups():
+            rows.append([axis, rg] + [break_text(found[v].breaking_point(axis, rg), found[v].max_load(axis))
+                                      for v in names])
+    return Table("Background load: breaking points (smallest load at which a rate group missed a deadline)",
+                 ["load axis", "rate group"] + names, rows)
+
+
+def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> Table:
+    names = sorted(found)
+    fastest = found[names[0]].rate_groups()[0]
+    loads = sorted({p.load_us for v in names for p in found[v].points if p.axis == axis})
+    rows = []
+    for load in loads:
+        row: list[Any] = [load]
+        for v in names:
+            at = {p.rate_group: p for p in found[v].points if p.axis == axis and p.load_us == load}
+            point = at.get(fastest)
+            row += [point.latency_p99 * 1e6 / cycles_hz if point else "",
+                    point.latency_max * 1e6 / cycles_hz if point else "",
+                    ", ".join(rg for rg, p in at.items() if p.missed) or "-"]
+        rows.append(row)
+    columns = ["load (µs)"]
+    for v in names:
+        columns += [f"{v} {fastest} p99 (µs)", f"{v} {fastest} max (µs)", f"{v} missed deadlines"]
+    return Table(f"Background load sweep, axis '{axis}'", columns, rows)
+
+
+def boards_table(datas: list[Results]) -> Table:
+    """The key metrics of every board and variant, side by side."""
+    columns = [(d, v) for d in datas for v in d.names()]
+    metrics = list(BOARD_METRICS)
+    for d, v in columns:
+        metrics += [m for m in d.variants[v].metrics
+                    if ((m.quantity == "latency" and m.stat == "p99") or m.quantity == "slips") and m not in metrics]
+    rows: list[list[Any]] = []
+    for metric in metrics:
+        values = [d.variants[v].metric(metric) for d, v in columns]
+        rows.append([metric.label] + [value if value is not None else "" for value in values])
+    found = [sweeps(d).get(v) for d, v in columns]
+    axes = list(dict.fromkeys(a for sw in found if sw for a in sw.axes()))
+    for axis in axes:
+        for rg in next(sw for sw in found if sw).rate_groups():
+            rows.append([f"breaking point, {axis} load, {rg}"] +
+                        [break_text(sw.breaking_point(axis, rg), sw.max_load(axis)) if sw else "" for sw in found])
+    return Table("Boards side by side", ["metric"] + [f"{d.board} {v}" for d, v in columns], rows)
