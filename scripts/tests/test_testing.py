@@ -56,3 +56,20 @@ def test_the_suite_boards_are_its_platform_allow_list(tmp_path):
     bad.write_text("tests: {}\n")
     with pytest.raises(KitError, match="names no platforms"):
         testing.suite_boards(bad)
+
+
+def test_a_baseline_holds_conditions_and_metrics_not_records(tmp_path):
+    from kittools import budget, compare, console, results
+    from kittools.footprint import Footprint
+    from sample_console import console_log
+
+    data = compare.results([compare.VariantData(v, Footprint(1000, 500, 262144, 65536),
+                                                console.parse(console_log(v))) for v in ("baremetal", "rtos")])
+    path = tmp_path / "baselines" / "board.json"
+    testing.write_baseline(data, path)
+    written = json.loads(path.read_text())
+    assert all("records" not in v for v in written["variants"].values())
+    baseline = results.load(path)
+    assert baseline.conditions == data.conditions
+    assert {n: v.metrics for n, v in baseline.variants.items()} == {n: v.metrics for n, v in data.variants.items()}
+    assert budget.check(data, baseline).passed
