@@ -44,7 +44,8 @@ def findings(data: Results) -> Text:
             lines.append(f"Stacks reserved: {a} {fmt(sa)} B, {b} {fmt(sb)} B.")
         rate_groups = sorted({m.name for m in va_.metrics if m.quantity == "slips"})
         for rg in rate_groups:
-            la, lb = va_.metric(model.rg_metric(rg, "latency", "p99")), vb_.metric(model.rg_metric(rg, "latency", "p99"))
+            p99 = model.rg_metric(rg, "latency", "p99")
+            la, lb = va_.metric(p99), vb_.metric(p99)
             slipped = {v: data.variants[v].metric(model.slips(rg)) for v in names}
             if la is None or lb is None:
                 continue
@@ -82,7 +83,7 @@ def break_text(value: int | None, max_us: int) -> str:
 
 def knee(p99_us: list[float], series: list[sweep.Point]) -> int | None:
     """The first load at which the p99 is KNEE_FACTOR over its zero-load value."""
-    return next((p.load_us for q, p in zip(p99_us, series) if q > p99_us[0] * KNEE_FACTOR), None)
+    return next((p.load_us for q, p in zip(p99_us, series, strict=True) if q > p99_us[0] * KNEE_FACTOR), None)
 
 
 def switches_per_second(data: Results, variant: str) -> float | None:
@@ -106,14 +107,14 @@ def sweep_guidance(data: Results, found: dict[str, sweep.Sweep]) -> Text:
         sw = found[v]
         fastest = sw.rate_groups()[0]
         for axis in sw.axes():
-            breaks = [(b, rg) for rg in sw.rate_groups() if (b := sw.breaking_point(axis, rg)) is not None]
+            breaks = [(at_us, rg) for rg in sw.rate_groups() if (at_us := sw.breaking_point(axis, rg)) is not None]
             series = sw.series(axis, fastest)
             p99 = [p.latency_p99 * 1e6 / cycles_hz for p in series]
             at = knee(p99, series)
             grows = f"; its p99 latency starts to grow at {at} µs" if at is not None else ""
             if breaks:
                 load, rg = min(breaks)
-                before = [q for q, p in zip(p99, series) if p.load_us < load]
+                before = [q for q, p in zip(p99, series, strict=True) if p.load_us < load]
                 grow = (f", from {before[0]:.1f} µs to {before[-1]:.1f} µs just below the break"
                         if before and at is not None else "")
                 share = f" ({load / period * 100:.0f}% of the {period:.0f} µs period)" if period else ""

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import yaml
 
@@ -262,7 +263,7 @@ def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -
     if short:
         levers = "; ".join(f"{what}: {_LEVERS[what]}" for what in ("flash", "RAM") if what in short_of)
         raise KitError(f"{board.identifier} cannot hold the deployment as measured in {shown_as}: "
-                       + "; ".join(short) + f". Shrink the deployment first (docs/porting.md, 'Memory budget'): "
+                       + "; ".join(short) + ". Shrink the deployment first (docs/porting.md, 'Memory budget'): "
                        + levers + ".")
     return headroom
 

@@ -88,7 +88,7 @@ def check(data: Results, baseline: Results, budget: Budget | None = None) -> Ver
         if old is None:
             verdict.violations.append(f"{name}: not in the baseline")
             continue
-        for metric, value in data.variants[name].metrics.items():
+        for metric in data.variants[name].metrics:
             now, before = data.variants[name].metric(metric), old.metric(metric)
             if now is None or before is None:
                 continue

@@ -9,8 +9,10 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 from . import budget, compare, conditions, modules, report, results, runner, testing
@@ -97,14 +99,14 @@ def cmd_test(args: argparse.Namespace) -> int:
     check_provisioned()
     log_dir = Path(args.output).resolve()
     total = testing.Tally()
-    steps = []
+    steps: list[tuple[str, Callable[[], testing.Tally]]] = []
     if not args.skip_twister:
         steps.append((f"twister suite under QEMU ({', '.join(boards)})", lambda: testing.run_twister(boards, log_dir)))
         steps.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
         for board in boards:
             steps.append((f"budget: {board} results against its baseline",
-                          lambda board=board: testing.check_budget(board, log_dir, _budget(args),
-                                                                   args.update_baseline)))
+                          functools.partial(testing.check_budget, board, log_dir, _budget(args),
+                                            args.update_baseline)))
     if not args.skip_host:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:

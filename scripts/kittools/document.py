@@ -4,7 +4,7 @@ renderers (kittools.render) turn into Markdown, HTML, JSON and CSV."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Union
+from typing import Any
 
 CAVEAT = ("Times are QEMU virtual time (icount): exact and repeatable, they compare software paths; "
           "they are not hardware latencies.")
@@ -29,7 +29,7 @@ class Image:
     png: bytes
 
 
-Section = Union[Table, Text, Image]
+Section = Table | Text | Image
 
 
 def fmt(value: Any) -> str:

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import json
 import subprocess
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Iterator
+from typing import Any
 
 from .workspace import KIT_ROOT, KitError, environment
 
@@ -106,4 +107,5 @@ def report(build_dir: Path, kind: str) -> dict:
                                 env=environment(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
         if result.returncode != 0 or not path.is_file():
             raise KitError(f"west build -t {kind}_report failed for {build_dir}: {result.stderr[-2000:]}")
-    return json.loads(path.read_text())
+    loaded: dict[str, Any] = json.loads(path.read_text())
+    return loaded

@@ -6,9 +6,9 @@ renderers (render) live apart."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
 
 from . import analysis, budget, plots, render, results, tables
 from .budget import Budget

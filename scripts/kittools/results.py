@@ -73,7 +73,8 @@ def records_of(variant: model.Variant) -> console.Run:
 
 def twister_build(twister_out: Path, platform: str, scenario: str) -> Path:
     """The build folder twister made for a scenario on a platform."""
-    builds = [p.parent.parent for p in (twister_out / platform.replace("/", "_")).glob(f"**/{scenario}/zephyr/zephyr.elf")]
+    platform_dir = twister_out / platform.replace("/", "_")
+    builds = [p.parent.parent for p in platform_dir.glob(f"**/{scenario}/zephyr/zephyr.elf")]
     if len(builds) != 1:
         raise KitError(f"expected one twister build of {scenario} on {platform}, found {len(builds)}")
     return builds[0]

@@ -23,7 +23,7 @@ class Tally:
     passed: int = 0
     failed: int = 0
 
-    def add(self, other: "Tally") -> None:
+    def add(self, other: Tally) -> None:
         self.passed += other.passed
         self.failed += other.failed
 
@@ -157,8 +157,8 @@ def gtest_tally(path: Path) -> Tally:
 
 
 def run_host_tests(log_dir: Path) -> Tally:
-    tests = KIT_ROOT / "tests" / "host"
-    configure = ["cmake", "-S", str(tests), "-B", str(HOST_BUILD), "-G", "Ninja", "-DBUILD_TESTING=ON"]
+    tests_dir = KIT_ROOT / "tests" / "host"
+    configure = ["cmake", "-S", str(tests_dir), "-B", str(HOST_BUILD), "-G", "Ninja", "-DBUILD_TESTING=ON"]
     if _run(configure, log_dir / "host-configure.log") != 0:
         raise KitError(f"host test configuration failed; see {log_dir / 'host-configure.log'}")
     if _run(["cmake", "--build", str(HOST_BUILD), "--target", "kit_host_tests"], log_dir / "host-build.log") != 0:

@@ -3,15 +3,12 @@
 from __future__ import annotations
 
 import argparse
-import sys
-from pathlib import Path
 
 from west.commands import WestCommand
 
-# west loads this file by path; make the package importable from it
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
-from kittools import cli  # noqa: E402
+# west loads this file by path, from the venv it runs in; scripts/setup.sh
+# installs the kit's package there (editable), so it imports as any other
+from kittools import cli
 
 
 class KitCommand(WestCommand):

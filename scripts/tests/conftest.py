@@ -1,4 +1,2 @@
-import sys
-from pathlib import Path
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+"""kittools is imported as installed (scripts/setup.sh installs scripts/ into the
+venv, editable); the tests' own helpers (sample_console) sit next to them."""

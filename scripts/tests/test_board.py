@@ -53,8 +53,10 @@ def _platform(zephyr: Path, folder: str, stem: str, text: str) -> Path:
 
 def _zephyr(tmp_path: Path, version: bool = True) -> Path:
     zephyr = tmp_path / "zephyr"
-    _platform(zephyr, "qemu/cortex_m3", "qemu_cortex_m3", "identifier: qemu_cortex_m3\narch: arm\nram: 64\nflash: 256\n")
-    _platform(zephyr, "qemu/cortex_m0", "qemu_cortex_m0", "identifier: qemu_cortex_m0\narch: arm\nram: 16\nflash: 256\n")
+    _platform(zephyr, "qemu/cortex_m3", "qemu_cortex_m3",
+              "identifier: qemu_cortex_m3\narch: arm\nram: 64\nflash: 256\n")
+    _platform(zephyr, "qemu/cortex_m0", "qemu_cortex_m0",
+              "identifier: qemu_cortex_m0\narch: arm\nram: 16\nflash: 256\n")
     _platform(zephyr, "qemu/x86", "qemu_x86", "identifier: qemu_x86\narch: x86\nram: 1024\nflash: 1024\n")
     (zephyr / "boards" / "qemu" / "x86" / "board.yml").write_text("board:\n  name: qemu_x86\n")
     mps2 = _platform(zephyr, "arm/mps2", "mps2_an385", "identifier: mps2/an385\narch: arm\n").parent
@@ -288,7 +290,8 @@ def test_twister_lists_gain_the_board_once_and_keep_their_comments():
         "  integration_platforms:\n    - qemu_cortex_m3\n    - mps2/an385\n").replace(
         "      - qemu_cortex_m3   # only here\n",
         "      - qemu_cortex_m3   # only here\n      - mps2/an385\n").replace(
-        "platform_allow: qemu_cortex_m3 mps2/an521\n", "platform_allow: qemu_cortex_m3 mps2/an521 mps2/an385\n").replace(
+        "platform_allow: qemu_cortex_m3 mps2/an521\n",
+        "platform_allow: qemu_cortex_m3 mps2/an521 mps2/an385\n").replace(
         "[qemu_cortex_m3]  # flow style", "[qemu_cortex_m3, mps2/an385]  # flow style")
     assert board.add_to_twister_lists(once, "mps2/an385") == once
 

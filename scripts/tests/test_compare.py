@@ -1,10 +1,12 @@
 from kittools import compare, console, model
 from kittools.footprint import Footprint
+
 from sample_console import console_log
 
 
 def _data(variant: str, rom: int, ram: int, **kwargs) -> compare.VariantData:
-    return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536), console.parse(console_log(variant, **kwargs)))
+    return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536),
+                               console.parse(console_log(variant, **kwargs)))
 
 
 def test_metrics_convert_cycles_to_microseconds():

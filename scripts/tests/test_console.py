@@ -1,12 +1,14 @@
 import pytest
 
 from kittools import console
+
 from sample_console import console_log
 
 
 def test_parses_every_kit_line_and_ignores_the_rest():
     run = console.parse(console_log())
-    assert [r.kind for r in run.records] == ["BANNER", "RG", "TASK", "HIST", "HASH", "CMD", "STACK", "CPU", "CPU", "END"]
+    assert [r.kind for r in run.records] == ["BANNER", "RG", "TASK", "HIST", "HASH", "CMD", "STACK", "CPU", "CPU",
+                                             "END"]
     assert run.one("TASK").fields["context"] == "slice"
     assert run.variant == "baremetal"
     assert run.passed

@@ -10,6 +10,7 @@ import pytest
 
 from kittools import analysis, compare, console, model, results
 from kittools.footprint import Footprint
+
 from sample_console import console_log
 
 BASELINES = Path(__file__).resolve().parents[2] / "tests" / "baselines"

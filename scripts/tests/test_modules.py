@@ -10,7 +10,8 @@ def _tree():
             {"name": "y", "identifier": "F-Prime/Fw/Types/SerializableAc.cpp/g", "size": 5},
             {"name": "z", "identifier": "app/Components/Timing/TimingComponentAc.cpp/h", "size": 7}]},
         {"name": "WORKSPACE", "children": [
-            {"name": "a", "identifier": "deps/fprime-baremetal/fprime-baremetal/Os/TaskRunner/TaskRunner.cpp/r", "size": 3},
+            {"name": "a", "size": 3,
+             "identifier": "deps/fprime-baremetal/fprime-baremetal/Os/TaskRunner/TaskRunner.cpp/r"},
             {"name": "b", "identifier": "rtos/Os/PriorityTask.cpp/s", "size": 2},
             {"name": "c", "identifier": "newlib/libc/tinystdio/vfprintf.c/vfprintf", "size": 30}]},
         {"name": "/", "children": [

@@ -6,6 +6,7 @@ import pytest
 from kittools import analysis, budget, compare, console, model, report, results
 from kittools.footprint import Footprint
 from kittools.workspace import KitError
+
 from sample_console import console_log
 
 

@@ -8,6 +8,7 @@ import subprocess
 from PIL import Image
 
 from kittools import report
+
 from test_report import _results
 
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",

@@ -3,6 +3,7 @@ points computed and cross-checked, plots and guidance generated."""
 
 from kittools import analysis, compare, console, model, report, sweep
 from kittools.footprint import Footprint
+
 from sample_console import console_log
 
 CYCLES_PER_US = 12  # the sample console's 12 MHz counter

@@ -61,6 +61,7 @@ def test_the_suite_boards_are_its_platform_allow_list(tmp_path):
 def test_a_baseline_holds_conditions_and_metrics_not_records(tmp_path):
     from kittools import budget, compare, console, results
     from kittools.footprint import Footprint
+
     from sample_console import console_log
 
     data = compare.results([compare.VariantData(v, Footprint(1000, 500, 262144, 65536),
