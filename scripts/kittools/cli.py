@@ -111,6 +111,7 @@ def cmd_test(args: argparse.Namespace) -> int:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:
         steps.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
+        steps.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
     for name, step in steps:
         _say(f"{name} ...")
         tally = step()

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
@@ -198,3 +199,24 @@ def run_pytest(log_dir: Path) -> Tally:
     if not xml.is_file():
         raise KitError(f"pytest wrote no report (exit {code}); see {log_dir / 'pytest.log'}")
     return junit_tally(xml)
+
+
+#: The tooling's static checks, run from scripts/ (its pyproject.toml configures both)
+LINTERS = (("ruff", ["check", "."]), ("mypy", ["kittools"]))
+
+
+def run_lint(log_dir: Path) -> Tally:
+    """ruff and mypy over the tooling, one pass or fail each."""
+    tally = Tally()
+    for tool, arguments in LINTERS:
+        log = log_dir / f"{tool}.log"
+        log.parent.mkdir(parents=True, exist_ok=True)
+        with log.open("w") as out:
+            code = subprocess.run([sys.executable, "-m", tool, *arguments], cwd=KIT_ROOT / "scripts",
+                                  stdout=out, stderr=subprocess.STDOUT).returncode
+        if code == 0:
+            tally.passed += 1
+        else:
+            print(f"[kit]   {tool} found problems (exit {code}): see {log}", flush=True)
+            tally.failed += 1
+    return tally

@@ -74,3 +74,14 @@ def test_a_baseline_holds_conditions_and_metrics_not_records(tmp_path):
     assert baseline.conditions == data.conditions
     assert {n: v.metrics for n, v in baseline.variants.items()} == {n: v.metrics for n, v in data.variants.items()}
     assert budget.check(data, baseline).passed
+
+
+def test_lint_passes_on_the_tooling_and_counts_each_tool(tmp_path):
+    tally = testing.run_lint(tmp_path)
+    assert (tally.passed, tally.failed) == (2, 0), [p.read_text() for p in tmp_path.glob("*.log")]
+    assert {p.name for p in tmp_path.glob("*.log")} == {"ruff.log", "mypy.log"}
+
+
+def test_a_lint_failure_is_one_failure(tmp_path, monkeypatch):
+    monkeypatch.setattr(testing, "LINTERS", (("ruff", ["check", "--select", "E", "--line-length", "20", "."]),))
+    assert (testing.run_lint(tmp_path).failed, testing.run_lint(tmp_path).passed) == (1, 0)
