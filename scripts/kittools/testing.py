@@ -4,9 +4,11 @@ and the tooling's own pytest, with one closing count."""
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -62,14 +64,76 @@ def suite_boards(suite: Path = SUITE) -> list[str]:
     return [str(p) for p in platforms]
 
 
+_ANSI = re.compile(r"\x1b\[[0-9;]*[A-Za-z]")
+# Twister 4.0's announcements and, with -v, its line per finished configuration
+# (twisterlib/runner.py: TwisterRunner.run, show_brief, ProjectBuilder.report_out)
+_JOBS = re.compile(r"^INFO\s+-\s+JOBS: (?P<jobs>\d+)\s*$")
+_SELECTED = re.compile(r"^INFO\s+-\s+(?P<scenarios>\d+) test scenarios \((?P<configurations>\d+) configurations\) "
+                       r"selected, (?P<filtered>\d+) configurations filtered \((?P<static>\d+) by static filter")
+_DONE = re.compile(r"^INFO\s+-\s+(?P<done>\d+)/(?P<total>\d+)\s+(?P<platform>\S+)\s+(?P<suite>\S+)\s+"
+                   r"(?P<status>[A-Z_]+)(?:\s+(?P<reason>.*?))?\s+\((?P<info>[^()]*)\)\s*$")
+_SECONDS = re.compile(r"(?P<s>\d+(?:\.\d+)?)s\b")
+
+
+@dataclass
+class TwisterProgress:
+    """Reads twister's console output line by line; says one line per
+    finished configuration, and how many are left."""
+
+    total: int | None = None
+    jobs: int | None = None
+
+    def line(self, text: str) -> str | None:
+        """What to print for this line of twister's output, or None."""
+        text = _ANSI.sub("", text).rstrip()
+        if match := _JOBS.match(text):
+            self.jobs = int(match["jobs"])
+            return None
+        if match := _SELECTED.match(text):
+            self.total = int(match["configurations"]) - int(match["static"])
+            jobs = f", {self.jobs} at a time" if self.jobs else ""
+            return f"[kit]   twister: {self.total} configurations to build and run{jobs}"
+        match = _DONE.match(text)
+        if match is None:
+            return None
+        done = int(match["done"])
+        total = self.total if self.total is not None else int(match["total"])
+        seconds = _SECONDS.search(match["info"])
+        info = f"{float(seconds['s']):.1f} s" if seconds else match["info"]
+        reason = f" {match['reason']}" if match["reason"] else ""
+        suite = match["suite"].rsplit("/", 1)[-1]
+        return (f"[kit]   {done}/{total} {match['platform']} {suite} {match['status']}{reason} {info} "
+                f"({max(total - done, 0)} left)")
+
+
+def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None]) -> int:
+    """Run `command`, its whole output into `log`; each line (ended by a
+    newline or a carriage return) is also given to `say`, which returns what
+    to print, if anything."""
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("wb") as out:
+        process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+        assert process.stdout is not None
+        for raw in process.stdout:
+            out.write(raw)
+            out.flush()
+            for piece in raw.decode(errors="replace").replace("\r", "\n").splitlines():
+                shown = say(piece)
+                if shown is not None:
+                    print(shown, flush=True)
+        return process.wait()
+
+
 def run_twister(platforms: list[str], log_dir: Path) -> Tally:
     """The suite on every board, two builds or QEMU runs at a time (icount
-    timing does not depend on the host's load)."""
-    command = ["west", "twister", "-T", "tests", "-j", "2", "--inline-logs",
+    timing does not depend on the host's load). Twister's whole output goes
+    to <log_dir>/twister.log; one line per finished configuration is printed."""
+    command = ["west", "twister", "-T", "tests", "-j", "2", "-v", "--inline-logs",
                "--outdir", str(TWISTER_OUT), "--overflow-as-errors"]
     for platform in platforms:
         command += ["-p", platform]
-    code = _run(command, log_dir / "twister.log")
+    code = _run_streamed(command, log_dir / "twister.log", TwisterProgress().line)
     tally = twister_tally(TWISTER_OUT / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)

@@ -1,4 +1,5 @@
 import json
+import os
 
 import pytest
 
@@ -85,3 +86,52 @@ def test_lint_passes_on_the_tooling_and_counts_each_tool(tmp_path):
 def test_a_lint_failure_is_one_failure(tmp_path, monkeypatch):
     monkeypatch.setattr(testing, "LINTERS", (("ruff", ["check", "--select", "E", "--line-length", "20", "."]),))
     assert (testing.run_lint(tmp_path).failed, testing.run_lint(tmp_path).passed) == (1, 0)
+
+
+# Twister 4.0's output with -v (twisterlib/runner.py), colors included
+TWISTER_OUTPUT = [
+    "INFO    - Using Ninja..",
+    "INFO    - JOBS: 2",
+    "INFO    - 16 test scenarios (40 configurations) selected, 16 configurations filtered (16 by static filter, "
+    "0 at runtime).",
+    "INFO    - \x1b[1;32mBuilding\x1b[0m ...",
+    "INFO    -  3/24 qemu_cortex_m3/ti_lm3s6965 kit.deployment.rtos                                "
+    "\x1b[32mPASSED\x1b[39m (qemu 2.341s)",
+    "INFO    - 24/24 mps2/an385                 tests/deployment/kit.faults.baremetal              "
+    "\x1b[31mFAILED\x1b[39m Timeout (qemu 60.012s)",
+    "INFO    - 12/24 mps2/an385                 kit.load.rtos                                      "
+    "\x1b[33mNOT RUN\x1b[39m (build)",
+]
+
+
+def test_twister_progress_says_one_line_per_finished_configuration():
+    progress = testing.TwisterProgress()
+    said = [s for s in (progress.line(line) for line in TWISTER_OUTPUT) if s is not None]
+    assert said[:3] == [
+        "[kit]   twister: 24 configurations to build and run, 2 at a time",
+        "[kit]   3/24 qemu_cortex_m3/ti_lm3s6965 kit.deployment.rtos PASSED 2.3 s (21 left)",
+        "[kit]   24/24 mps2/an385 kit.faults.baremetal FAILED Timeout 60.0 s (0 left)",
+    ]
+    assert said[3] == "[kit]   12/24 mps2/an385 kit.load.rtos NOT RUN build (12 left)"
+
+
+def test_twister_progress_without_the_announcement_uses_the_line_total():
+    progress = testing.TwisterProgress()
+    assert progress.line("INFO    - 1/2 qemu_cortex_m3 kit.soak.rtos PASSED (qemu 610.2s)") == \
+        "[kit]   1/2 qemu_cortex_m3 kit.soak.rtos PASSED 610.2 s (1 left)"
+    assert progress.line("INFO    - Total complete:    1/   2  50%  built (not run):    0, filtered:    0\r") is None
+
+
+def test_streamed_output_is_logged_whole_and_said_line_by_line(tmp_path, monkeypatch, capsys):
+    monkeypatch.setattr(testing, "environment", lambda: dict(os.environ))
+    heard: list[str] = []
+
+    def say(line: str) -> str | None:
+        heard.append(line)
+        return f"said {line}" if line.startswith("b") else None
+
+    code = testing._run_streamed(["sh", "-c", "printf 'a\\nb1\\rb2\\n'; exit 3"], tmp_path / "t.log", say)
+    assert code == 3
+    assert (tmp_path / "t.log").read_bytes() == b"a\nb1\rb2\n"
+    assert heard == ["a", "b1", "b2"]
+    assert capsys.readouterr().out == "said b1\nsaid b2\n"
