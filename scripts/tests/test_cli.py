@@ -2,6 +2,8 @@
 
 import os
 import stat
+import subprocess
+import sys
 import time
 
 import pytest
@@ -75,3 +77,37 @@ def test_a_run_that_never_ends_is_reported_with_its_log(tmp_path, monkeypatch):
     build = _fake_qemu(tmp_path, monkeypatch, "printf 'KIT BANNER variant=rtos\\n'\nsleep 30\n")
     with pytest.raises(KitError, match="did not reach its end line within 2 s"):
         runner.run(build, tmp_path / "console.log", timeout_s=2)
+
+
+REPORT_WITHOUT_WORKSPACE = """
+import sys
+from importlib.abc import MetaPathFinder
+
+class NoWorkspace(MetaPathFinder):
+    # Nothing of west, twister or Zephyr may be imported by kit report
+    def find_spec(self, name, path, target=None):
+        if name.split(".")[0] in ("west", "twisterlib", "zephyr", "devicetree", "scl"):
+            raise ImportError(f"kit report imported {name}")
+        return None
+
+sys.meta_path.insert(0, NoWorkspace())
+from kittools import cli, workspace
+
+def unprovisioned(*_args, **_kwargs):
+    raise workspace.KitError("the workspace is not provisioned (forced by the test)")
+
+workspace.check_provisioned = cli.check_provisioned = unprovisioned
+workspace.environment = unprovisioned
+sys.exit(cli.main(sys.argv[1:]))
+"""
+
+
+@pytest.mark.parametrize("board", ["qemu_cortex_m3", "mps2_an385"])
+def test_kit_report_needs_no_workspace(tmp_path, board):
+    baseline = str(workspace.KIT_ROOT / "tests" / "baselines" / f"{board}.json")
+    run = subprocess.run([sys.executable, "-c", REPORT_WITHOUT_WORKSPACE, "report", baseline, "--baseline", baseline,
+                          "--output", str(tmp_path)], capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert "budget check against" in run.stdout and ": PASS" in run.stdout
+    assert "Budget check: PASS" in (tmp_path / "report.md").read_text()
+    assert {p.name for p in tmp_path.iterdir()} >= {"report.md", "report.html", "report.json", "report.csv"}
