@@ -85,13 +85,14 @@ west_update() {
   rm -f "$log"
 }
 
-# Upstream fixes the kit needs, kept as small explained patches in
-# <variant>/patches/<project>/*.patch and applied to the workspace copy.
+# Upstream fixes the kit needs, kept as small explained patches with the
+# module glue of the upstream they fix (modules/<project>/patches/*.patch),
+# applied to the workspace copy (deps/<project>).
 apply_patches() {
   local patch project
-  for patch in "$KIT_ROOT"/*/patches/*/*.patch; do
+  for patch in "$KIT_ROOT"/modules/*/patches/*.patch; do
     [ -f "$patch" ] || continue
-    project=$(basename "$(dirname "$patch")")
+    project=$(basename "$(dirname "$(dirname "$patch")")")
     [ -d "$WS/$project" ] || die "patch $patch names '$project', which is not in the workspace"
     if git -C "$WS/$project" apply --reverse --check "$patch" 2>/dev/null; then
       continue  # already applied

@@ -37,19 +37,15 @@ TODOS: dict[str, tuple[str, ...]] = {
         "Console: the run's record goes to the zephyr,console UART; the banner must appear at boot.",
         "Tick: the system timer must do 1 kHz; check the banner's cycles_hz (the cycle counter's rate).",
     ),
-    "baremetal.conf": (
-        "Re-measure CONFIG_MAIN_STACK_SIZE on this board: run the suite and size it from the",
-        "largest 'KIT STACK name=main' line of every scenario, with headroom for the fatal paths.",
-    ),
-    "rtos.conf": (
-        "Re-measure CONFIG_MAIN_STACK_SIZE and CONFIG_DYNAMIC_THREAD_STACK_SIZE on this board from",
-        "the 'KIT STACK' lines of a run of every scenario, with headroom. Stack protection:",
-        "CONFIG_HW_STACK_PROTECTION=y where the part has an MPU, else CONFIG_STACK_SENTINEL=y.",
+    "Kconfig.defconfig": (
+        "Re-measure the stacks on this board from the 'KIT STACK' lines of a run of every",
+        "scenario, with headroom: MAIN_STACK_SIZE per model, DYNAMIC_THREAD_STACK_SIZE (rtos).",
+        "Stack protection (rtos): HW_STACK_PROTECTION where the part has an MPU, else STACK_SENTINEL.",
     ),
     "Tables.fpp": (
         "Priorities and stacks are the reference board's: re-measure the stacks from the",
         "'KIT STACK' lines of this board's runs and check the priorities (docs/porting.md,",
-        "steps 6-7). Every stack must be <= CONFIG_DYNAMIC_THREAD_STACK_SIZE (rtos.conf).",
+        "steps 6-7). Every stack must be <= DYNAMIC_THREAD_STACK_SIZE (Kconfig.defconfig; the build checks).",
     ),
     "app.overlay": (
         "Devicetree copied from the reference board: check the console UART (zephyr,console)",

@@ -9,7 +9,9 @@ from pathlib import Path
 KIT_ROOT = Path(__file__).resolve().parents[2]
 DEPS = KIT_ROOT / "deps"
 BOARDS = KIT_ROOT / "boards"
-VARIANTS = ("baremetal", "rtos")
+# The execution models: every folder with a Kconfig.model (app/Kconfig
+# sources each one as an entry of its KIT_MODEL choice)
+VARIANTS = tuple(sorted(path.parent.name for path in KIT_ROOT.glob("*/Kconfig.model")))
 UPSTREAMS = ("zephyr", "fprime", "fprime-baremetal", "fprime-zephyr")
 
 

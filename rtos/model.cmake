@@ -1,10 +1,11 @@
-# RTOS variant: every active component is a Zephyr thread, through
+# SPDX-License-Identifier: Apache-2.0
+# RTOS execution model: every active component is a Zephyr thread, through
 # fprime-zephyr's OSAL, with the kit's priority mapping on top (rtos/Os).
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/config")
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/Os")
 
-set(KIT_VARIANT_SOURCES "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp")
-set(KIT_VARIANT_IMPLEMENTATIONS
+set(KIT_MODEL_SOURCES "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp")
+set(KIT_MODEL_IMPLEMENTATIONS
     Kit_Os_Task_ZephyrPriority  # fprime-zephyr's task, with F´ priorities mapped onto Zephyr's
     Os_Mutex_Zephyr             # k_mutex / k_condvar
 )

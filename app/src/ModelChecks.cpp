@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: Apache-2.0
+// ======================================================================
+// \title  ModelChecks.cpp
+// \brief  Build-time checks that the topology fits the execution model
+//
+// The topology's active instances, the board's stack table
+// (boards/<board>/Tables.fpp), Zephyr's thread pool (rtos) and the
+// TaskRunner's table (baremetal) are sized in four places; a mismatch
+// would show only at run time (a task that never starts, a stack that
+// does not fit its pool slot). These asserts stop the build instead.
+// ======================================================================
+#include "app/Top/FppConstantsAc.hpp"
+#include "app/Top/KitTopology.hpp"
+// After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
+#include <zephyr/autoconf.h>
+
+#if defined(CONFIG_KIT_MODEL_BAREMETAL)
+#include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
+#endif
+
+namespace Kit {
+namespace {
+
+// Every active instance of the stack table, and the largest stack
+constexpr FwSizeType TABLE_STACKS[] = {
+    Stacks::rg1kHz, Stacks::rg100Hz, Stacks::rg10Hz, Stacks::cmdDisp, Stacks::events, Stacks::tlmSend, Stacks::load,
+};
+constexpr FwSizeType TABLE_ENTRIES = sizeof(TABLE_STACKS) / sizeof(TABLE_STACKS[0]);
+
+constexpr FwSizeType largestStack() {
+    FwSizeType largest = 0;
+    for (FwSizeType i = 0; i < TABLE_ENTRIES; i++) {
+        largest = TABLE_STACKS[i] > largest ? TABLE_STACKS[i] : largest;
+    }
+    return largest;
+}
+
+static_assert(TABLE_ENTRIES == ACTIVE_INSTANCE_COUNT,
+              "the stack table (boards/<board>/Tables.fpp) and ACTIVE_INSTANCES (app/Top) must list the same "
+              "active instances");
+
+#if defined(CONFIG_KIT_MODEL_RTOS)
+// fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
+static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,
+              "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model) must give one slot per active instance");
+static_assert(largestStack() <= CONFIG_DYNAMIC_THREAD_STACK_SIZE,
+              "a stack of boards/<board>/Tables.fpp is larger than a thread pool slot "
+              "(CONFIG_DYNAMIC_THREAD_STACK_SIZE, boards/<board>/Kconfig.defconfig)");
+#elif defined(CONFIG_KIT_MODEL_BAREMETAL)
+// Every active instance is one task of the TaskRunner's fixed table
+static_assert(ACTIVE_INSTANCE_COUNT <= Os::Baremetal::TASK_CAPACITY,
+              "more active instances than fprime-baremetal's TaskRunner holds (TASK_CAPACITY)");
+#endif
+
+}  // namespace
+}  // namespace Kit
