@@ -1,6 +1,6 @@
 // ======================================================================
 // \title  baremetal/Variant.cpp
-// \brief  The cooperative main loop's half of the tick
+// \brief  The baremetal model's tick and rate-group dispatch: the cooperative main loop's half
 //
 // The tick ISR only counts and stamps the tick (app/src/TickClock.cpp): the
 // count is the flag. The main loop sleeps until it moves, hands the tick to
@@ -8,20 +8,20 @@
 // first. Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
-#include "app/Components/Timing/TickClock.hpp"
-#include "app/Top/KitTopology.hpp"
-#include "app/src/Fatal.hpp"
 #include "baremetal/Os/TimedTask.hpp"
 
-#include <zephyr/fatal_types.h>
+#include <Fw/Types/Assert.hpp>
+
 #include <zephyr/kernel.h>
-#include <zephyr/sys/printk.h>
 #include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
 
 K_KERNEL_STACK_DECLARE(z_main_stack, CONFIG_MAIN_STACK_SIZE);
 
 namespace Kit {
 namespace Variant {
+
+// Every cooperative task, plus idle, is one CPU context
+static_assert(TimedTask::MAX_TASKS + 1 <= MAX_CONTEXTS, "MAX_CONTEXTS cannot hold every task and idle");
 
 namespace {
 // After the last tick: passes enough to empty every queue (the deepest holds 8)
@@ -42,65 +42,75 @@ U64 s_idleCycles = 0;
 U32 s_idleWaits = 0;
 U32 s_idleMax = 0;
 
-U32 permille(U64 part, U64 whole) {
-    return whole == 0 ? 0 : static_cast<U32>((part * 1000u) / whole);
-}
-
 U32* stackBottom() {
     return reinterpret_cast<U32*>(K_KERNEL_STACK_BUFFER(z_main_stack));
 }
 
 // One pass of every task, then the stack guard
-void runPass() {
+GuardBreach runPass() {
     Os::Baremetal::TaskRunner::getSingleton().runAll();
     const U32* const bottom = stackBottom();
     for (U32 i = 0; i < GUARD_WORDS; i++) {
         if (bottom[i] != PAINT) {
-            printk("KIT FATAL stack=main guard_word=%u address=0x%08x: stack overflow\n", static_cast<unsigned>(i),
-                   static_cast<unsigned>(reinterpret_cast<uintptr_t>(&bottom[i])));
-            Fatal::halt(K_ERR_STACK_CHK_FAIL);
+            return {true, i, reinterpret_cast<uintptr_t>(&bottom[i])};
         }
     }
+    return {false, 0, 0};
+}
+
+U32 mainStackUsed() {
+    // Where the paint ends is the high-water mark
+    const U32 size = K_KERNEL_STACK_SIZEOF(z_main_stack);
+    const U32* word = stackBottom();
+    const U32* const top = word + size / sizeof(U32);
+    while (word < top && *word == PAINT) {
+        word++;
+    }
+    return size - static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
 }
 }  // namespace
 
-const char* name() {
-    return "baremetal";
+ContextKind contextKind() {
+    return ContextKind::SLICE;
 }
 
 void onTickIsr() {}
 
-const char* contextName() {
-    return "main";  // the only context besides interrupts
+Context currentContext() {
+    return {"main", nullptr};  // the only context besides interrupts
 }
 
-void waitForTick(U32 handled) {
-    const U32 begin = TickClock::now();
+void waitForTick(U32 (*ticksFired)(), U32 handled) {
+    const U32 begin = k_cycle_get_32();
     // Check and sleep without a window: on ARMv7-M k_cpu_idle() masks with
     // PRIMASK before it lifts the irq_lock (BASEPRI) and sleeps in WFI, so a
     // tick that fires after the check still wakes it. Not
     // k_cpu_atomic_idle(): it sleeps in WFE, which QEMU executes as a busy
     // spin, costing wall time (a soak ran 5x slower) though not virtual time.
     unsigned int key = irq_lock();
-    while (TickClock::ticksFired() == handled) {
+    while (ticksFired() == handled) {
         k_cpu_idle();
         key = irq_lock();
     }
     irq_unlock(key);
-    const U32 slept = TickClock::now() - begin;
+    const U32 slept = k_cycle_get_32() - begin;
     s_idleCycles += slept;
     s_idleWaits++;
     s_idleMax = slept > s_idleMax ? slept : s_idleMax;
 }
 
-void afterTick() {
-    runPass();
+GuardBreach afterTick() {
+    return runPass();
 }
 
-void drain() {
+GuardBreach drain() {
     for (U32 pass = 0; pass < DRAIN_PASSES; pass++) {
-        runPass();
+        const GuardBreach breach = runPass();
+        if (breach.breached) {
+            return breach;
+        }
     }
+    return {false, 0, 0};
 }
 
 void prepareStacks() {
@@ -111,34 +121,28 @@ void prepareStacks() {
     }
 }
 
-U32 stackUsedTotal() {
-    // Where the paint ends is the high-water mark
-    const U32 size = K_KERNEL_STACK_SIZEOF(z_main_stack);
-    const U32* word = stackBottom();
-    const U32* const top = word + size / sizeof(U32);
-    while (word < top && *word == PAINT) {
-        word++;
-    }
-    return size - static_cast<U32>(reinterpret_cast<const U8*>(word) - reinterpret_cast<const U8*>(stackBottom()));
+U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {
+    out[0] = {{"main", nullptr}, static_cast<U32>(K_KERNEL_STACK_SIZEOF(z_main_stack)), mainStackUsed()};
+    return 1;
 }
 
-void reportStacks() {
-    printk("KIT STACK name=main size=%u used=%u\n", static_cast<unsigned>(K_KERNEL_STACK_SIZEOF(z_main_stack)),
-           static_cast<unsigned>(stackUsedTotal()));
-}
-
-void reportCpu(U64 runCycles) {
-    for (FwSizeType i = 0; i < TimedTask::taskCount(); i++) {
+U32 cpu(CpuUse (&out)[MAX_CONTEXTS]) {
+    const FwSizeType tasks = TimedTask::taskCount();
+    FW_ASSERT(tasks + 1 <= MAX_CONTEXTS, static_cast<FwAssertArgType>(tasks));
+    for (FwSizeType i = 0; i < tasks; i++) {
         const SliceRecord& task = TimedTask::record(i);
-        const char* const name = activeInstanceHolding(task.argument);
-        printk("KIT CPU name=%s runs=%u avg=%u max=%u cpu_permille=%u\n", name != nullptr ? name : "?",
-               static_cast<unsigned>(task.slices),
-               static_cast<unsigned>(task.slices == 0 ? 0 : task.cycles / task.slices),
-               static_cast<unsigned>(task.maxCycles), static_cast<unsigned>(permille(task.cycles, runCycles)));
+        out[i] = {{nullptr, task.argument},
+                  task.slices,
+                  static_cast<U32>(task.slices == 0 ? 0 : task.cycles / task.slices),
+                  task.maxCycles,
+                  task.cycles};
     }
-    printk("KIT CPU name=idle runs=%u avg=%u max=%u cpu_permille=%u\n", static_cast<unsigned>(s_idleWaits),
-           static_cast<unsigned>(s_idleWaits == 0 ? 0 : s_idleCycles / s_idleWaits), static_cast<unsigned>(s_idleMax),
-           static_cast<unsigned>(permille(s_idleCycles, runCycles)));
+    out[tasks] = {{"idle", nullptr},
+                  s_idleWaits,
+                  static_cast<U32>(s_idleWaits == 0 ? 0 : s_idleCycles / s_idleWaits),
+                  s_idleMax,
+                  s_idleCycles};
+    return static_cast<U32>(tasks + 1);
 }
 
 }  // namespace Variant

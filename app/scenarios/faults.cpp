@@ -14,7 +14,6 @@
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
-#include "app/src/Variant.hpp"
 
 #include <zephyr/sys/printk.h>
 
@@ -94,7 +93,7 @@ bool run(const Context& context) {
     const bool heapOk = Report::heap(context.allocator);
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
-    Variant::reportStacks();
+    Report::stacks();
     // Every fault detected and reported, nothing lost
     const bool detected = invalidEvents >= 1 && malformedEvents >= 2 && opcodeErrorEvents >= 2 && slips >= 1 &&
                           slipEvents >= 1 && load.dropped() > 0 && dropEvents >= 1;

@@ -19,7 +19,6 @@
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
-#include "app/src/Variant.hpp"
 
 #include <zephyr/sys/printk.h>
 
@@ -142,7 +141,7 @@ bool run(const Context& context) {
     const bool heapOk = Report::heap(context.allocator);
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
-    Variant::reportStacks();
+    Report::stacks();
     // A queue the sweep overflowed would make its points meaningless
     return commanded && heapOk && downlinked && load.dropped() == 0;
 }

@@ -9,7 +9,6 @@
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
-#include "app/src/Variant.hpp"
 
 namespace Kit {
 namespace Scenario {
@@ -38,8 +37,8 @@ bool run(const Context& context) {
     const bool measured = Report::results(CONFIG_KIT_RUN_TICKS, context.probeCost, context.allocator);
     const bool commanded = Report::commands(s_script, SCRIPT_FRAMES);
     const bool downlinked = Report::downlinkAndTicks();
-    Variant::reportStacks();
-    Variant::reportCpu(Session::cyclesOf(CONFIG_KIT_RUN_TICKS));
+    Report::stacks();
+    Report::cpu(Session::cyclesOf(CONFIG_KIT_RUN_TICKS));
     return measured && commanded && downlinked;
 }
 

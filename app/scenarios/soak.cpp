@@ -14,7 +14,6 @@
 #include "app/src/HeapMonitor.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
-#include "app/src/Variant.hpp"
 
 #include <zephyr/sys/printk.h>
 
@@ -42,7 +41,7 @@ bool run(const Context& context) {
             slips += timing.record(i).slips + timing.record(i).lateStarts;
             cyclesOk = cyclesOk && timing.record(i).cycles == expectedCycles(i, SOAK_CHECKPOINT_TICKS);
         }
-        const U32 stackUse = Variant::stackUsedTotal();
+        const U32 stackUse = Report::stackUsedTotal();
         firstStackUse = (minute == 1) ? stackUse : firstStackUse;
         const bool flat = stackUse == firstStackUse;
         printk(
@@ -59,7 +58,7 @@ bool run(const Context& context) {
     const bool heapOk = Report::heap(context.allocator);
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
-    Variant::reportStacks();
+    Report::stacks();
     return passed && heapOk && downlinked;
 }
 

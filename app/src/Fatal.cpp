@@ -13,7 +13,7 @@
 // detectors (the baremetal stack guard) end here too, through Fatal::halt.
 // ======================================================================
 #include "app/src/Fatal.hpp"
-#include "app/src/Variant.hpp"
+#include "app/src/Report.hpp"
 
 #include <zephyr/fatal.h>
 #include <zephyr/kernel.h>
@@ -50,11 +50,7 @@ void Kit::Fatal::expect(unsigned int reason) {
 
 void Kit::Fatal::halt(unsigned int reason) {
     const bool expected = s_expecting && reason == s_expectedReason;
-    printk("KIT HALT reason=%s code=%u context=%s expected=%s\n", reasonName(reason), reason,
-           Kit::Variant::contextName(), expected ? "yes" : "no");
-    if (!expected) {
-        printk("PROJECT EXECUTION FAILED\n");
-    }
+    Kit::Report::halt(reasonName(reason), reason, expected);
     // Nothing else may run: Zephyr's halt masks interrupts and spins until the
     // runner (twister, scripts/kit) stops QEMU.
     k_fatal_halt(reason);

@@ -21,6 +21,14 @@ namespace Report {
 
 namespace {
 
+const char* contextKindName(Variant::ContextKind kind) {
+    return kind == Variant::ContextKind::THREAD ? "thread" : "slice";
+}
+
+U32 permille(U64 part, U64 whole) {
+    return whole == 0 ? 0 : static_cast<U32>((part * 1000u) / whole);
+}
+
 const char* responseName(const Fw::CmdResponse& response) {
     switch (response.e) {
         case Fw::CmdResponse::OK:
@@ -82,11 +90,10 @@ bool rateGroups(U32 ticks) {
                static_cast<unsigned>(rg.periodMax));
         // Betaflight-style task line: runs, average and worst execution, late
         // starts, share of the CPU (per mille of the run)
-        const U32 cpuPermille = runCycles == 0 ? 0 : static_cast<U32>((rg.exec.sum() * 1000u) / runCycles);
-        printk("KIT TASK name=%s runs=%u exec_avg=%u exec_max=%u late=%u cpu_permille=%u\n", rg.spec.name,
-               static_cast<unsigned>(rg.cycles), static_cast<unsigned>(rg.exec.mean()),
-               static_cast<unsigned>(rg.exec.max()), static_cast<unsigned>(rg.lateStarts),
-               static_cast<unsigned>(cpuPermille));
+        printk("KIT TASK name=%s context=%s runs=%u exec_avg=%u exec_max=%u late=%u cpu_permille=%u\n", rg.spec.name,
+               contextKindName(Variant::contextKind()), static_cast<unsigned>(rg.cycles),
+               static_cast<unsigned>(rg.exec.mean()), static_cast<unsigned>(rg.exec.max()),
+               static_cast<unsigned>(rg.lateStarts), static_cast<unsigned>(permille(rg.exec.sum(), runCycles)));
         printHistogram(rg.spec.name, "latency", rg.latency.histogram());
         printHistogram(rg.spec.name, "exec", rg.exec.histogram());
         printHistogram(rg.spec.name, "jitter", rg.periodError.histogram());
@@ -94,11 +101,11 @@ bool rateGroups(U32 ticks) {
     return passed;
 }
 
-void banner(const char* variant) {
+void banner() {
     printk(
         "KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "
         "cycles_hz=%u icount_shift=%u run_ticks=%u\n",
-        variant, CONFIG_BOARD_TARGET, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
+        CONFIG_KIT_MODEL_NAME, CONFIG_BOARD_TARGET, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
         static_cast<unsigned>(CONFIG_KIT_TICK_HZ), static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC),
         static_cast<unsigned>(TickClock::cyclesPerSecond()), static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT),
         static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
@@ -152,8 +159,61 @@ bool results(U32 ticks, U32 probeCost, const CountingAllocator& allocator) {
     return rgOk && heapOk;
 }
 
-void end(const char* variant, bool passed) {
-    printk("KIT END variant=%s result=%s uptime_ms=%u\n", variant, passed ? "PASS" : "FAIL",
+const char* contextName(const Variant::Context& context) {
+    const char* const instance = activeInstanceHolding(context.owner);
+    if (instance != nullptr) {
+        return instance;
+    }
+    return context.name != nullptr ? context.name : "?";
+}
+
+void stacks() {
+    Variant::StackUse entries[Variant::MAX_CONTEXTS];
+    const U32 count = Variant::stacks(entries);
+    for (U32 i = 0; i < count; i++) {
+        printk("KIT STACK name=%s size=%u used=%u\n", contextName(entries[i].context),
+               static_cast<unsigned>(entries[i].size), static_cast<unsigned>(entries[i].used));
+    }
+}
+
+U32 stackUsedTotal() {
+    Variant::StackUse entries[Variant::MAX_CONTEXTS];
+    const U32 count = Variant::stacks(entries);
+    U32 total = 0;
+    for (U32 i = 0; i < count; i++) {
+        total += entries[i].used;
+    }
+    return total;
+}
+
+void cpu(U64 runCycles) {
+    Variant::CpuUse entries[Variant::MAX_CONTEXTS];
+    const U32 count = Variant::cpu(entries);
+    const char* const kind = contextKindName(Variant::contextKind());
+    for (U32 i = 0; i < count; i++) {
+        const Variant::CpuUse& use = entries[i];
+        printk("KIT CPU name=%s context=%s runs=%u avg=%u max=%u cpu_permille=%u\n", contextName(use.context), kind,
+               static_cast<unsigned>(use.runs), static_cast<unsigned>(use.avgCycles),
+               static_cast<unsigned>(use.maxCycles), static_cast<unsigned>(permille(use.cycles, runCycles)));
+    }
+}
+
+void guardBreach(const Variant::GuardBreach& breach) {
+    printk("KIT FATAL stack=%s guard_word=%u address=0x%08x: stack overflow\n",
+           contextName(Variant::currentContext()), static_cast<unsigned>(breach.word),
+           static_cast<unsigned>(breach.address));
+}
+
+void halt(const char* reasonName, unsigned int reason, bool expected) {
+    printk("KIT HALT reason=%s code=%u context=%s expected=%s\n", reasonName, reason,
+           contextName(Variant::currentContext()), expected ? "yes" : "no");
+    if (!expected) {
+        printk("PROJECT EXECUTION FAILED\n");
+    }
+}
+
+void end(bool passed) {
+    printk("KIT END variant=%s result=%s uptime_ms=%u\n", CONFIG_KIT_MODEL_NAME, passed ? "PASS" : "FAIL",
            static_cast<unsigned>(k_uptime_get_32()));
     if (!passed) {
         // Twister's failure marker: a failed run fails its scenario at once

@@ -11,11 +11,14 @@
 #include <Fw/FPrimeBasicTypes.hpp>
 #include "app/Components/Uplink/Uplink.hpp"
 #include "app/src/CountingAllocator.hpp"
+#include "app/src/Variant.hpp"
 
 namespace Kit {
 namespace Report {
 
-void banner(const char* variant);
+//! The BANNER line: the model (CONFIG_KIT_MODEL_NAME), the board, the
+//! commits and the timing conditions
+void banner();
 
 //! RG, TASK and HIST lines of every rate group over a segment of `ticks`
 //! ticks; true when each ran exactly its cycles, without slips
@@ -37,7 +40,28 @@ bool commands(const Uplink::Frame* frames, FwSizeType count);
 //! DOWNLINK and TICKS lines; true when every packet was decoded and counted
 bool downlinkAndTicks();
 
-void end(const char* variant, bool passed);
+//! A STACK line per stack of the model, with its high-water mark
+void stacks();
+
+//! The model's stacks' high-water marks added up, in bytes
+U32 stackUsedTotal();
+
+//! A CPU line per execution context (thread, or cooperative task, and
+//! idle): runs, average and worst cycles per run, share of `runCycles`
+void cpu(U64 runCycles);
+
+//! The name of an execution context: the active instance whose object
+//! holds its owner, else its own name
+const char* contextName(const Variant::Context& context);
+
+//! The FATAL line of a stack guard that lost its paint
+void guardBreach(const Variant::GuardBreach& breach);
+
+//! The HALT line of a fatal error (reason: K_ERR_*), in the running context
+void halt(const char* reasonName, unsigned int reason, bool expected);
+
+//! The END line (and twister's failure marker when the run failed)
+void end(bool passed);
 
 }  // namespace Report
 }  // namespace Kit

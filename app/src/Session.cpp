@@ -5,13 +5,26 @@
 #include "app/src/Session.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
+#include "app/src/Fatal.hpp"
+#include "app/src/Report.hpp"
 #include "app/src/TickControl.hpp"
 #include "app/src/Variant.hpp"
+
+#include <zephyr/fatal_types.h>
 
 namespace Kit {
 namespace Session {
 
 namespace {
+// A model's stack guard that lost its paint ends the run before corrupted
+// memory is trusted
+void haltOnBreach(const Variant::GuardBreach& breach) {
+    if (breach.breached) {
+        Report::guardBreach(breach);
+        Fatal::halt(K_ERR_STACK_CHK_FAIL);
+    }
+}
+
 U32 gcd(U32 a, U32 b) {
     // Euclid on dividers of at most a few thousand: a handful of steps
     while (b != 0) {
@@ -38,18 +51,18 @@ void run(U32 ticks) {
     // A run of 0 ticks never ends (flight-like); otherwise the loop is
     // bounded by the tick count.
     while (ticks == 0 || handled < ticks) {
-        Variant::waitForTick(handled);
+        Variant::waitForTick(TickClock::ticksFired, handled);
         const U32 fired = TickClock::ticksFired();
         // Hand over every tick that fired, in order: a main loop that fell
         // behind shows up as latency and slips, never as lost cycles.
         while (handled != fired && (ticks == 0 || handled < ticks)) {
             timing.tick();
             handled++;
-            Variant::afterTick();
+            haltOnBreach(Variant::afterTick());
         }
     }
     TickControl::stop();
-    Variant::drain();
+    haltOnBreach(Variant::drain());
 }
 
 void nextSegment() {

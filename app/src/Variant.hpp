@@ -1,9 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Variant.hpp
 // \brief  What each execution model supplies to the shared main loop
 //
-// The whole baremetal-vs-RTOS difference in the main loop is these
-// functions: baremetal/Variant.cpp and rtos/Variant.cpp implement them.
+// The whole difference between the models in the main loop is these
+// functions: <model>/Variant.cpp implements them (baremetal/Variant.cpp,
+// rtos/Variant.cpp). The interface is one-way: a model hands data to app/
+// (stacks, contexts, CPU time, a stack-guard breach) and never includes the
+// topology or prints the record; app/src/Report.cpp alone formats it.
 // ======================================================================
 #ifndef KIT_VARIANT_HPP
 #define KIT_VARIANT_HPP
@@ -13,38 +17,75 @@
 namespace Kit {
 namespace Variant {
 
-//! "baremetal" or "rtos"
-const char* name();
+//! The most execution contexts (threads, cooperative tasks, idle) a model
+//! reports: the topology's active instances plus the kernel's own
+constexpr U32 MAX_CONTEXTS = 16;
+
+//! What a model's execution contexts are, for the record ("context=")
+enum class ContextKind : U8 {
+    THREAD,  //!< a preemptive thread with a stack of its own
+    SLICE,   //!< a cooperative task's slices, run from the one main loop
+};
+
+//! An execution context: app/ names it after the active component whose
+//! object holds `owner` (F´ names its threads ActComp_<n> when object names
+//! are compiled out), else by `name`
+struct Context {
+    const char* name;   //!< the context's own name ("main", "idle", Zephyr's thread name), or nullptr
+    const void* owner;  //!< an address inside the component it runs (its task's argument), or nullptr
+};
+
+//! One stack and its high-water mark
+struct StackUse {
+    Context context;
+    U32 size;  //!< bytes
+    U32 used;  //!< bytes ever used
+};
+
+//! One execution context's CPU time over the run
+struct CpuUse {
+    Context context;
+    U32 runs;           //!< scheduling windows (thread) or slices (cooperative)
+    U32 avgCycles;      //!< per run
+    U32 maxCycles;      //!< the longest run
+    U64 cycles;         //!< in all
+};
+
+//! A stack guard that lost its paint (baremetal's detector; no MPU assumed)
+struct GuardBreach {
+    bool breached;
+    U32 word;           //!< which guard word, from the bottom
+    uintptr_t address;  //!< where it is
+};
+
+//! The kind of every context of this model
+ContextKind contextKind();
 
 //! Called from the tick ISR after the tick is counted and stamped
 void onTickIsr();
 
-//! Return once more than `handled` ticks have fired (sleeping meanwhile)
-void waitForTick(U32 handled);
+//! Return once `ticksFired()` has moved past `handled` (sleeping meanwhile)
+void waitForTick(U32 (*ticksFired)(), U32 handled);
 
-//! After each tick has been handed to the rate group driver
-void afterTick();
+//! After each tick has been handed to the rate group driver; a breach
+//! means the run must stop (app/src/Session.cpp halts it)
+GuardBreach afterTick();
 
 //! After the last tick: let queued work finish before results are read
-void drain();
+GuardBreach drain();
 
 //! Before setup: prepare stack measurement (baremetal paints the main stack)
 void prepareStacks();
 
-//! Print a "KIT STACK" line per stack with its size and high-water mark
-void reportStacks();
+//! Every stack with its size and high-water mark; returns how many
+U32 stacks(StackUse (&out)[MAX_CONTEXTS]);
 
-//! The high-water marks of all stacks, added up, in bytes
-U32 stackUsedTotal();
+//! Every execution context's CPU time (threads or cooperative tasks, and
+//! idle); returns how many
+U32 cpu(CpuUse (&out)[MAX_CONTEXTS]);
 
-//! The execution context running now, for a fatal report: the active
-//! component whose thread it is (rtos), or "main" (baremetal)
-const char* contextName();
-
-//! Print a "KIT CPU" line per execution context (thread, or cooperative
-//! task, and idle): runs, average and worst cycles per run, share of the
-//! `runCycles` the run lasted
-void reportCpu(U64 runCycles);
+//! The execution context running now, for a fatal report
+Context currentContext();
 
 }  // namespace Variant
 }  // namespace Kit

@@ -25,7 +25,7 @@ Kit::CountingAllocator s_allocator;
 }  // namespace
 
 int main() {
-    Kit::Report::banner(Kit::Variant::name());
+    Kit::Report::banner();
     Kit::Variant::prepareStacks();
     Os::init();
     s_allocator.registerForFprime();
@@ -35,6 +35,6 @@ int main() {
     // The probe's own cost, measured before the run so it does not disturb it
     const Kit::Scenario::Context context = {Kit::timing.measureProbeCost(PROBE_CALIBRATION_PAIRS), s_allocator};
     const bool passed = Kit::Scenario::run(context);
-    Kit::Report::end(Kit::Variant::name(), passed);
+    Kit::Report::end(passed);
     return 0;
 }
