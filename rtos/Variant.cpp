@@ -8,8 +8,8 @@
 // ======================================================================
 #include "app/src/Variant.hpp"
 
-#include <Fw/Types/Assert.hpp>
 #include <zephyr/kernel.h>
+#include <Fw/Types/Assert.hpp>
 
 namespace Kit {
 namespace Variant {

@@ -199,9 +199,8 @@ void cpu(U64 runCycles) {
 }
 
 void guardBreach(const Variant::GuardBreach& breach) {
-    printk("KIT FATAL stack=%s guard_word=%u address=0x%08x: stack overflow\n",
-           contextName(Variant::currentContext()), static_cast<unsigned>(breach.word),
-           static_cast<unsigned>(breach.address));
+    printk("KIT FATAL stack=%s guard_word=%u address=0x%08x: stack overflow\n", contextName(Variant::currentContext()),
+           static_cast<unsigned>(breach.word), static_cast<unsigned>(breach.address));
 }
 
 void halt(const char* reasonName, unsigned int reason, bool expected) {

@@ -45,10 +45,10 @@ struct StackUse {
 //! One execution context's CPU time over the run
 struct CpuUse {
     Context context;
-    U32 runs;           //!< scheduling windows (thread) or slices (cooperative)
-    U32 avgCycles;      //!< per run
-    U32 maxCycles;      //!< the longest run
-    U64 cycles;         //!< in all
+    U32 runs;       //!< scheduling windows (thread) or slices (cooperative)
+    U32 avgCycles;  //!< per run
+    U32 maxCycles;  //!< the longest run
+    U64 cycles;     //!< in all
 };
 
 //! A stack guard that lost its paint (baremetal's detector; no MPU assumed)

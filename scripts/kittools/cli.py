@@ -15,7 +15,7 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, compare, conditions, modules, report, results, runner, testing
+from . import budget, compare, conditions, modules, report, results, runner, style, testing
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
 
@@ -112,6 +112,7 @@ def cmd_test(args: argparse.Namespace) -> int:
     if not args.skip_python:
         steps.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
         steps.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
+        steps.append(("C++ style (clang-format, F´ style)", style.run_style_check))
     for name, step in steps:
         _say(f"{name} ...")
         tally = step()
