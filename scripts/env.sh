@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Source this to use west, twister and fprime-util by hand in this clone:
 #   . scripts/env.sh
 # Activates the kit's venv and selects Debian's arm-none-eabi toolchain

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Provision everything the kit needs, idempotently: Debian packages, a pinned
 # Python venv, the west workspace in deps/, Zephyr's Python requirements and a
 # toolchain check. Safe to run again: each step skips what is already in place.

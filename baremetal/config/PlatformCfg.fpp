@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # OS handle storage for the baremetal variant. Each F´ Os object embeds a
 # handle of these sizes (checked by static_assert in Os/Delegate.hpp), so
 # they are kept near what fprime-baremetal, F´'s stubs and fprime-zephyr's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The priority and stack table of the kit's deployment on mps2/an385, used by
 # app/Top/instances.fpp (scaffolded from qemu_cortex_m3's; the suite's runs
 # on this board confirm it).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The priority and stack table of the kit's deployment on qemu_cortex_m3,
 # used by app/Top/instances.fpp.
 module Kit {

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # OS handle storage for the RTOS variant. Each F´ Os object embeds a handle
 # of these sizes (checked by static_assert in Os/Delegate.hpp). A task handle
 # holds a whole struct k_thread, far above F´'s default of 40.

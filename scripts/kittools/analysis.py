@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """What the numbers say: findings, the load sweep's breaking points and
 knees, and the guidance drawn from them. Every sentence is generated from
 the results; nothing here draws or renders."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`kit new-board`: bring the kit to a new board.
 
 Checks that the pinned Zephyr knows the board (a twister platform file names

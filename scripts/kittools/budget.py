@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The budget gate: a board's results against its baseline.
 
 ROM or static RAM more than +2%, a p99 more than +10% and over 2 µs, or any

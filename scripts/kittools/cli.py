@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """kit: the kit's command line (also `west kit`).
 
   kit compare   build both variants, run them under QEMU, write the comparison and its report
@@ -15,40 +16,30 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, compare, conditions, modules, report, results, runner, style, testing
+from . import budget, report, results, style, testing
 from .board import REFERENCE_BOARD, new_board
-from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned
+from .workspace import KIT_ROOT, KitError, check_board, check_provisioned
 
 
 def _say(message: str) -> None:
     print(f"[kit] {message}", flush=True)
 
 
-def compare_board(board: str, out_dir: Path) -> tuple[Path, bool]:
-    """Build and run both variants (nominal and load sweep) on one board;
-    returns its results file and whether every run passed."""
+def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
+    """The comparison's scenarios (tag `compare` of tests/deployment: each
+    model's nominal run and load sweep) on every board, through twister;
+    returns each board's results file and whether every run passed."""
     out_dir.mkdir(parents=True, exist_ok=True)
-    found = []
-    passed: list[bool] = []
-    for variant in VARIANTS:
-        _say(f"{board} {variant}: building (west build -T app/kit.{variant})")
-        result = runner.build_and_run(variant, board, out_dir)
-        fp = result.footprint
-        _say(f"{board} {variant}: ran to its end line: {'PASS' if result.run.passed else 'FAIL'}; "
-             f"ROM {fp.rom} B, RAM {fp.ram} B")
-        _say(f"{board} {variant}: ROM/RAM by module (west build -t rom_report / ram_report)")
-        rom = modules.breakdown(modules.report(result.build_dir, "rom"))
-        ram = modules.breakdown(modules.report(result.build_dir, "ram"))
-        _say(f"{board} {variant}: background-load sweep (west build -T app/kit.{variant}.load)")
-        sweep = runner.build_and_run(variant, board, out_dir, "load")
-        _say(f"{board} {variant}: sweep ran to its end line: {'PASS' if sweep.run.passed else 'FAIL'}")
-        result.run.records.extend(r for r in sweep.run.records if r.kind in results.SWEEP_KINDS)
-        found.append(compare.VariantData(variant, result.footprint, result.run, rom, ram,
-                                         conditions.read(result.build_dir)))
-        passed.append(result.run.passed and sweep.run.passed)
-    results_file = out_dir / "comparison.json"
-    results_file.write_text(json.dumps(compare.as_json(found), indent=2) + "\n")
-    return results_file, all(passed)
+    twister_out = out_dir / "twister"
+    tally = testing.run_twister(boards, out_dir, twister_out, tags=("compare",))
+    files = []
+    for board in boards:
+        data = results.from_twister(twister_out, board)
+        results_file = out_dir / check_board(board) / "comparison.json"
+        results_file.parent.mkdir(parents=True, exist_ok=True)
+        results_file.write_text(json.dumps(data.to_json(), indent=2) + "\n")
+        files.append(results_file)
+    return files, tally.failed == 0
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
@@ -57,12 +48,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
         check_board(board)
     check_provisioned()
     out_dir = Path(args.output).resolve()
-    files: list[Path] = []
-    passed = True
-    for board in boards:
-        results_file, board_passed = compare_board(board, out_dir / check_board(board))
-        files.append(results_file)
-        passed = passed and board_passed
+    files, passed = compare_boards(boards, out_dir)
     outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The variants' runs as comparable numbers (metrics) and as the results file
 (results / as_json, docs/results.md); kittools.report renders them."""
 

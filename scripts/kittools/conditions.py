@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The conditions of a build, read from the build itself: toolchain, the
 Kconfig values and F´ settings a result depends on."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Parse the firmware's console record.
 
 Every result line the deployment prints has the form

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The report as a document: titled sections (text, tables, images) that the
 renderers (kittools.render) turn into Markdown, HTML, JSON and CSV."""
 

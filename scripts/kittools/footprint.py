@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Static ROM and RAM of a Zephyr build, from its ELF and its .config.
 
 ROM is how far the allocated sections loaded into flash extend (code,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The results model: what a results file holds (docs/results.md), typed.
 
 Metrics are keyed by structured identifiers (MetricId, written in the file as

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """ROM and RAM by module, from Zephyr's `rom_report` / `ram_report` trees.
 
 Zephyr attributes every symbol to its source path (from DWARF); the kit

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The report's plots (PNG, matplotlib): the only module that imports a
 plotting library."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The report's renderers: its sections as Markdown, self-contained HTML
 (plots inline, a Jinja2 template), and its results as JSON and CSV."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The design-review report: results files in; Markdown, self-contained HTML
 (plots inline), JSON and CSV out, with an optional baseline diff and budget
 check. This module assembles the sections; the budget gate (budget), what

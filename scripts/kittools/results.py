@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """A run's results file: load and check it, or build it from a twister run.
 
 The schema is documented in docs/results.md; `compare.as_json` writes it.

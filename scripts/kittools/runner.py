@@ -1,66 +1,52 @@
-"""Build a variant with west and run it under QEMU until its end line."""
+# SPDX-License-Identifier: Apache-2.0
+"""Run a kit build under QEMU (its own `run` target) until its end line."""
 
 from __future__ import annotations
 
 import os
 import re
 import selectors
-import shlex
 import signal
 import subprocess
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
-from . import console
-from .footprint import Footprint, measure
-from .workspace import KIT_ROOT, KitError, check_board, check_variant, environment
+from .workspace import KIT_ROOT, KitError, environment
 
 RUN_TIMEOUT_S = 180.0
-
-
-@dataclass
-class VariantResult:
-    variant: str
-    board: str
-    build_dir: Path
-    footprint: Footprint
-    run: console.Run
-    console_text: str
 
 
 def _tail(text: str, lines: int = 25) -> str:
     return "\n".join(text.splitlines()[-lines:])
 
 
-def build(variant: str, board: str, build_dir: Path, log: Path, scenario: str = "") -> None:
-    """`west build -b <board> -T app/kit.<variant>[.<scenario>]` into build_dir
-    (app/sample.yaml names the scenarios)."""
-    check_variant(variant)
-    check_board(board)
-    command = ["west", "build", "-b", board, "-d", str(build_dir), "-T",
-               f"app/kit.{variant}" + (f".{scenario}" if scenario else "")]
-    log.parent.mkdir(parents=True, exist_ok=True)
-    with log.open("w") as out:
-        result = subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=out, stderr=subprocess.STDOUT)
-    if result.returncode != 0:
-        raise KitError(f"build of {variant} failed ({' '.join(command)}); log {log}:\n{_tail(log.read_text())}")
+def run_command(build_dir: Path) -> list[str]:
+    """The build's own `run` target: QEMU exactly as the build (and twister)
+    runs it, machine, icount and console included."""
+    return ["cmake", "--build", str(build_dir), "--target", "run"]
 
 
-def qemu_command(build_dir: Path) -> list[str]:
-    """The QEMU command line the build's `run` target uses, with the console on
-    stdio. Twister builds send the console to a FIFO instead; the binary and
-    every other flag (machine, icount) stay exactly as built."""
-    ninja = build_dir / "build.ninja"
-    if not ninja.is_file():
-        raise KitError(f"{build_dir} is not a finished build (no build.ninja)")
-    for line in ninja.read_text().splitlines():
-        start = line.find("qemu-system-")
-        if start >= 0 and "-kernel" in line:
-            words = shlex.split(line[start:].split("&&")[0])
-            return [re.sub(r"^pipe,id=con,mux=on,path=\S+$", "stdio,id=con,mux=on", w) for w in words
-                    if w != "-pidfile" and not w.endswith("qemu.pid")]
-    raise KitError(f"no QEMU command in {ninja}: is this a QEMU board build?")
+def qemu_pipe(build_dir: Path) -> Path | None:
+    """The FIFO a twister build sends its console to (QEMU_PIPE in its CMake
+    cache: QEMU reads <pipe>.in and writes <pipe>.out), or None: a plain
+    build's console is on stdio."""
+    cache = build_dir / "CMakeCache.txt"
+    if not cache.is_file():
+        raise KitError(f"{build_dir} is not a configured build (no CMakeCache.txt)")
+    match = re.search(r"^QEMU_PIPE:[A-Z]+=(.+)$", cache.read_text(), re.MULTILINE)
+    return Path(match.group(1)) if match else None
+
+
+def _open_pipe(pipe: Path) -> tuple[int, int]:
+    """Both FIFOs of a QEMU pipe chardev, opened read-write so that neither
+    open blocks waiting for QEMU; returns (console fd, input fd)."""
+    fds = []
+    for suffix in (".out", ".in"):
+        fifo = pipe.with_name(pipe.name + suffix)
+        fifo.unlink(missing_ok=True)
+        os.mkfifo(fifo)
+        fds.append(os.open(fifo, os.O_RDWR | os.O_NONBLOCK))
+    return fds[0], fds[1]
 
 
 # A line that ends a run: the firmware's end line, or the halt marker every
@@ -73,14 +59,19 @@ def ends_run(line: str) -> bool:
 
 
 def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
-    """Run the build in QEMU, exactly as its `run` target would (qemu_command),
-    until the firmware's end line or a fatal report, then stop QEMU. Returns
-    the console text."""
-    command = qemu_command(build_dir)
-    process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True)
-    assert process.stdout is not None
-    fd = process.stdout.fileno()
+    """Run the build's `run` target (QEMU) until the firmware's end line or a
+    fatal report, then stop QEMU. The console is read from the build's QEMU
+    pipe (a twister build) or from stdio. Returns the console text."""
+    pipe = qemu_pipe(build_dir)
+    pipe_fds = _open_pipe(pipe) if pipe is not None else None
+    process = subprocess.Popen(run_command(build_dir), cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
+                               stdout=subprocess.DEVNULL if pipe_fds else subprocess.PIPE,
+                               stderr=subprocess.STDOUT, start_new_session=True)
+    if pipe_fds is not None:
+        fd = pipe_fds[0]
+    else:
+        assert process.stdout is not None
+        fd = process.stdout.fileno()
     lines: list[str] = []
     partial = b""
     finished = False
@@ -95,7 +86,10 @@ def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
                 if process.poll() is not None:
                     break
                 continue
-            chunk = os.read(fd, 65536)
+            try:
+                chunk = os.read(fd, 65536)
+            except BlockingIOError:
+                continue
             if not chunk:
                 break
             *complete, partial = (partial + chunk).split(b"\n")
@@ -108,18 +102,11 @@ def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
         if process.poll() is None:
             os.killpg(process.pid, signal.SIGTERM)
             process.wait(timeout=10)
+        for pipe_fd in pipe_fds or ():
+            os.close(pipe_fd)
     text = "\n".join(lines)
     log.write_text(text + "\n")
     if not finished:
         raise KitError(f"the run in {build_dir} did not reach its end line within {timeout_s:.0f} s; log {log}:\n"
                        f"{_tail(text)}")
     return text
-
-
-def build_and_run(variant: str, board: str, out_dir: Path, scenario: str = "") -> VariantResult:
-    name = variant + (f".{scenario}" if scenario else "")
-    build_dir = out_dir / f"{check_board(board)}-{name}"
-    build(variant, board, build_dir, out_dir / f"{name}.build.log", scenario)
-    text = run(build_dir, out_dir / f"{name}.console.log")
-    parsed = console.parse(text)
-    return VariantResult(variant, board, build_dir, measure(build_dir), parsed, text)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """C++ style check: the kit's own C++ against F´'s clang-format style.
 
 The style is the kit's `.clang-format` (F´'s, verbatim); the formatter is the

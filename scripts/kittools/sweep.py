@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The background-load sweep of a variant, from its SWEEP and BREAK records
 (app/scenarios/load.cpp prints them; docs/results.md describes them)."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The report's tables, built from the results (labels from kittools.model)."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The kit's test suite: twister under QEMU, host unit tests (googletest),
 and the tooling's own pytest, with one closing count."""
 
@@ -125,16 +126,20 @@ def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None
         return process.wait()
 
 
-def run_twister(platforms: list[str], log_dir: Path) -> Tally:
-    """The suite on every board, two builds or QEMU runs at a time (icount
-    timing does not depend on the host's load). Twister's whole output goes
-    to <log_dir>/twister.log; one line per finished configuration is printed."""
+def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
+                tags: tuple[str, ...] = ()) -> Tally:
+    """The suite (tests/) on every board, or its scenarios with one of `tags`,
+    two builds or QEMU runs at a time (icount timing does not depend on the
+    host's load). Twister's whole output goes to <log_dir>/twister.log; one
+    line per finished configuration is printed."""
     command = ["west", "twister", "-T", "tests", "-j", "2", "-v", "--inline-logs",
-               "--outdir", str(TWISTER_OUT), "--overflow-as-errors"]
+               "--outdir", str(out_dir), "--overflow-as-errors"]
     for platform in platforms:
         command += ["-p", platform]
+    for tag in tags:
+        command += ["-t", tag]
     code = _run_streamed(command, log_dir / "twister.log", TwisterProgress().line)
-    tally = twister_tally(TWISTER_OUT / "twister.json")
+    tally = twister_tally(out_dir / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)
     return tally

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """`west kit ...`: the kit's CLI as a west extension command."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Where things are, and the checks every command makes before it starts."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """A console log in the firmware's format (shape of app/src/Report.cpp output)."""
 
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """kit new-board: a fake Zephyr board tree, a fake kit and fake baselines in tmp_path."""
 
 from __future__ import annotations

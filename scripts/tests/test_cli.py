@@ -1,6 +1,6 @@
+# SPDX-License-Identifier: Apache-2.0
 """The CLI's bad-input paths: one clear error each, exit 2, nothing written."""
 
-import os
 import stat
 import subprocess
 import sys
@@ -42,15 +42,17 @@ def test_a_second_board_folder_is_found_by_its_full_target():
         workspace.check_board("mps2/an521")
 
 
-def _fake_qemu(tmp_path, monkeypatch, body: str):
-    """A build folder whose QEMU command is a script printing `body`."""
+def _fake_qemu(tmp_path, monkeypatch, body: str, pipe: bool = False):
+    """A build folder whose `run` target is a script printing `body`: on
+    stdio, or (pipe) into the QEMU pipe a twister build names in its cache."""
     script = tmp_path / "bin" / "qemu-system-fake"
     script.parent.mkdir()
-    script.write_text("#!/bin/sh\n" + body)
+    fifo = tmp_path / "qemu-fifo"
+    redirect = f"exec > {fifo}.out\n" if pipe else ""
+    script.write_text("#!/bin/sh\n" + redirect + body)
     script.chmod(script.stat().st_mode | stat.S_IXUSR)
-    monkeypatch.setenv("PATH", f"{script.parent}{os.pathsep}{os.environ['PATH']}")
-    (tmp_path / "build.ninja").write_text(
-        "build run: CUSTOM\n  COMMAND = cd /b && qemu-system-fake -kernel /b/zephyr/zephyr.elf && cd /b\n")
+    monkeypatch.setattr(runner, "run_command", lambda build_dir: [str(script)])
+    (tmp_path / "CMakeCache.txt").write_text(f"QEMU_PIPE:STRING={fifo}\n" if pipe else "BOARD:STRING=x\n")
     return tmp_path
 
 
@@ -71,6 +73,18 @@ def test_a_fatal_halt_ends_the_run_at_once(tmp_path, monkeypatch):
                        "expected=no\\nPROJECT EXECUTION FAILED\\n'\nsleep 30\n")
     text = runner.run(build, tmp_path / "console.log", timeout_s=20)
     assert "KIT HALT reason=stack_overflow" in text
+
+
+def test_a_twister_build_is_read_from_its_qemu_pipe(tmp_path, monkeypatch):
+    build = _fake_qemu(tmp_path, monkeypatch,
+                       "printf 'KIT BANNER variant=rtos\\nKIT END variant=rtos result=PASS\\n'\nsleep 30\n", pipe=True)
+    text = runner.run(build, tmp_path / "console.log", timeout_s=20)
+    assert text.splitlines() == ["KIT BANNER variant=rtos", "KIT END variant=rtos result=PASS"]
+
+
+def test_an_unconfigured_build_is_refused(tmp_path):
+    with pytest.raises(KitError, match="no CMakeCache.txt"):
+        runner.run(tmp_path, tmp_path / "console.log", timeout_s=2)
 
 
 def test_a_run_that_never_ends_is_reported_with_its_log(tmp_path, monkeypatch):

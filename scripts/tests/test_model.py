@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The results model: metric keys and labels, schema-1 upgrade, the budget
 gate's independence from the report, the CPU context kind."""
 

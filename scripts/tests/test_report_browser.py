@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The HTML report as a reviewer sees it: Debian's headless Chromium renders
 it, screenshots it, and the test checks tables, plots and the console."""
 

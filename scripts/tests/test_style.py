@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The C++ style check (kittools.style) on a throwaway tree."""
 
 import shutil

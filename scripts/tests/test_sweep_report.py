@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The load sweep in the report: parsed from SWEEP/BREAK records, breaking
 points computed and cross-checked, plots and guidance generated."""
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 import pytest
 
 from kittools import workspace
@@ -52,21 +53,3 @@ def test_missing_toolchain_is_explained(monkeypatch):
     monkeypatch.setattr(workspace.shutil, "which", lambda *a, **k: None)
     with pytest.raises(KitError, match="gcc-arm-none-eabi"):
         workspace.environment()
-
-
-def test_qemu_command_puts_the_console_on_stdio(tmp_path):
-    from kittools import runner
-    (tmp_path / "build.ninja").write_text(
-        "build run: CUSTOM\n  COMMAND = cd /b && qemu-system-arm -cpu cortex-m3 -pidfile qemu.pid "
-        "-chardev pipe,id=con,mux=on,path=/b/qemu-fifo -serial chardev:con -icount shift=4,align=off,sleep=off "
-        "-kernel /b/zephyr/zephyr.elf && cd /b\n")
-    command = runner.qemu_command(tmp_path)
-    assert command[0] == "qemu-system-arm"
-    assert "stdio,id=con,mux=on" in command and "-pidfile" not in command
-    assert "shift=4,align=off,sleep=off" in command and command[-1] == "/b/zephyr/zephyr.elf"
-
-
-def test_a_build_without_qemu_is_refused(tmp_path):
-    from kittools import runner
-    with pytest.raises(KitError, match="no build.ninja"):
-        runner.qemu_command(tmp_path)
