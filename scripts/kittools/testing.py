@@ -113,7 +113,10 @@ def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None
     to print, if anything."""
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("wb") as out:
-        process = subprocess.Popen(command, cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
+        # Unbuffered: a Python tool writing to a pipe would otherwise hand its
+        # progress over in blocks, minutes late
+        env = {**environment(), "PYTHONUNBUFFERED": "1"}
+        process = subprocess.Popen(command, cwd=KIT_ROOT, env=env, stdin=subprocess.DEVNULL,
                                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         assert process.stdout is not None
         for raw in process.stdout:
