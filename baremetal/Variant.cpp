@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  baremetal/Variant.cpp
 // \brief  The baremetal model's tick and rate-group dispatch: the cooperative main loop's half

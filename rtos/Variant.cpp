@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  rtos/Variant.cpp
 // \brief  The rtos model's tick and rate-group dispatch: the threaded main loop's half

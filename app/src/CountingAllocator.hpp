@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  CountingAllocator.hpp
 // \brief  F´'s memory allocator for the kit: malloc, counted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Fatal.cpp
 // \brief  Where every fatal path ends, in both variants

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Fatal.hpp
 // \brief  Where every fatal path ends (k_sys_fatal_error_handler, Fatal.cpp)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  HeapMonitor.hpp
 // \brief  Every use of the C heap (the malloc arena), whoever the caller

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Report.hpp
 // \brief  The console record of a run: banner, per-rate-group results, end line

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Session.cpp
 // \brief  The shared main loop, segment by segment

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Session.hpp
 // \brief  Run the deployment for a number of ticks: the one main loop both

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  TickClock.cpp
 // \brief  The board tick on Zephyr: a periodic k_timer whose expiry function

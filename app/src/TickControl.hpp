@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  TickControl.hpp
 // \brief  Start and stop the board tick (see TickClock.hpp for reading it)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  main.cpp
 // \brief  The kit's entry point, shared by both variants

@@ -4,6 +4,7 @@ and the tooling's own pytest, with one closing count."""
 
 from __future__ import annotations
 
+import concurrent.futures
 import json
 import re
 import subprocess
@@ -160,23 +161,32 @@ def recorded_hashes(path: Path) -> dict[tuple[str, str], str]:
     return hashes
 
 
-def check_determinism(log_dir: Path) -> Tally:
+def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
     """Run each twister-built binary that ended normally once more under
-    QEMU, with twister's own QEMU flags: under icount the raw timing samples,
-    and so their hash, must be identical to what twister recorded."""
-    tally = Tally()
-    for (platform, scenario), expected in sorted(recorded_hashes(TWISTER_OUT / "twister.json").items()):
-        if scenario.startswith("kit.soak."):
-            continue  # ten more virtual minutes per board; the soak checks itself
+    QEMU, `jobs` at a time, through the build's own run target (the console
+    from its QEMU pipe): under icount the raw timing samples, and so their
+    hash, must be identical to what twister recorded."""
+    runs = [(platform, scenario, expected)
+            for (platform, scenario), expected in sorted(recorded_hashes(TWISTER_OUT / "twister.json").items())
+            # the soak: ten more virtual minutes per board; it checks itself
+            if not scenario.startswith("kit.soak.")]
+    if not runs:
+        raise KitError("twister recorded no sample hash: nothing to compare")
+
+    def rerun(platform: str, scenario: str) -> str | None:
         build = results.twister_build(TWISTER_OUT, platform, scenario)
         text = runner.run(build, log_dir / f"{platform.replace('/', '_')}.{scenario}.rerun.log")
-        again = console.parse(text).one("HASH").fields.get("fnv")
-        same = again == expected
-        print(f"[kit]   {platform} {scenario}: sample hash {expected}, then {again}: "
-              f"{'identical' if same else 'DIFFERENT'}", flush=True)
-        tally.add(Tally(passed=1) if same else Tally(failed=1))
-    if tally.passed + tally.failed == 0:
-        raise KitError("twister recorded no sample hash: nothing to compare")
+        return console.parse(text).one("HASH").fields.get("fnv")
+
+    tally = Tally()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(rerun, platform, scenario) for platform, scenario, _ in runs]
+        for (platform, scenario, expected), future in zip(runs, futures, strict=True):
+            again = future.result()
+            same = again == expected
+            print(f"[kit]   {platform} {scenario}: sample hash {expected}, then {again}: "
+                  f"{'identical' if same else 'DIFFERENT'}", flush=True)
+            tally.add(Tally(passed=1) if same else Tally(failed=1))
     return tally
 
 
