@@ -72,17 +72,6 @@ endforeach()
 if(NOT DEFINED CONF_FILE)
     set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_BOARD_DIR}/kit.conf")
 endif()
-# F´'s sub-builds re-configure the application without the -DCONFIG_...
-# options that Zephyr keeps internal (such as the model and the scenario),
-# and write the main build's .config: they get those options as a fragment,
-# copied before their own configuration empties the file, so both agree.
-set(KIT_PARENT_OPTIONS "${FPRIME_BINARY_DIR}/zephyr/misc/generated/extra_kconfig_options.conf")
-if(DEFINED FPRIME_SUB_BUILD_TARGETS AND EXISTS "${KIT_PARENT_OPTIONS}")
-    configure_file("${KIT_PARENT_OPTIONS}" "${CMAKE_BINARY_DIR}/kit_main_build_options.conf" COPYONLY)
-    # (a cache entry: Zephyr reads the cache before local variables)
-    set(EXTRA_CONF_FILE ${EXTRA_CONF_FILE} "${CMAKE_BINARY_DIR}/kit_main_build_options.conf"
-        CACHE STRING "fragments after CONF_FILE" FORCE)
-endif()
 if(EXISTS "${KIT_BOARD_DIR}/app.overlay" AND NOT DEFINED DTC_OVERLAY_FILE)
     set(DTC_OVERLAY_FILE "${KIT_BOARD_DIR}/app.overlay")
 endif()
@@ -131,10 +120,30 @@ list(APPEND ZEPHYR_EXTRA_MODULES
     "${KIT_ROOT}/modules/fprime" "${KIT_ROOT}/modules/fprime-zephyr" "${KIT_ROOT}/modules/fprime-baremetal")
 include("${KIT_ROOT}/modules/fprime/fprime.cmake")
 
-find_package(Zephyr REQUIRED HINTS "${KIT_DEPS}/zephyr")
+# F´'s sub-build (it re-configures the application only to compute FPP
+# locations, dependencies and module information) needs F´'s modules, not
+# Zephyr: it takes the main build's resulting configuration instead of
+# configuring Zephyr a second time (about a third of a configure's time),
+# and a stand-in for Zephyr's `app` target that nothing builds.
+if(DEFINED FPRIME_SUB_BUILD_TARGETS)
+    set(KIT_SUB_BUILD ON)
+    # It inherits the cross compiler, which cannot link a host program
+    set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+    file(STRINGS "${FPRIME_BINARY_DIR}/zephyr/.config" KIT_MAIN_CONFIG REGEX "^CONFIG_[A-Za-z0-9_]+=")
+    foreach(KIT_SETTING IN LISTS KIT_MAIN_CONFIG)
+        string(REGEX MATCH "^(CONFIG_[A-Za-z0-9_]+)=\"?([^\"]*)\"?$" KIT_MATCHED "${KIT_SETTING}")
+        set(${CMAKE_MATCH_1} "${CMAKE_MATCH_2}")
+    endforeach()
+else()
+    set(KIT_SUB_BUILD OFF)
+    find_package(Zephyr REQUIRED HINTS "${KIT_DEPS}/zephyr")
+endif()
 
 # After the application's literal project() call
 macro(kit_deployment)
+    if(KIT_SUB_BUILD)
+        add_library(app STATIC EXCLUDE_FROM_ALL "${FPRIME_ZEPHYR_PATH}/cmake/toolchain/empty.cpp")
+    endif()
     fprime_zephyr_setup()
 
     # The shared deployment
@@ -167,6 +176,13 @@ macro(kit_deployment)
             ${KIT_MODEL_IMPLEMENTATIONS}
     )
     target_include_directories(app PRIVATE "${KIT_ROOT}")
+    if(NOT KIT_SUB_BUILD)
+        kit_zephyr_link()
+    endif()
+endmacro()
+
+# What only the main build links
+macro(kit_zephyr_link)
     # Every C heap allocation goes through app/src/HeapMonitor.cpp
     foreach(KIT_HEAP_FUNCTION IN ITEMS malloc calloc realloc aligned_alloc memalign free)
         zephyr_ld_options("-Wl,--wrap=${KIT_HEAP_FUNCTION}")
