@@ -1,0 +1,60 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The repository's layout agrees with itself: every execution model and
+scenario the Kconfig choices offer has its files, and the twister files ask
+only for models and scenarios that exist (a mismatch would otherwise show as
+a Kconfig error in one twister configuration, minutes into a run)."""
+
+from __future__ import annotations
+
+import re
+
+import yaml
+
+from kittools.workspace import KIT_ROOT, VARIANTS
+
+MODEL_FILES = ("Kconfig.model", "model.cmake", "Variant.cpp")
+
+
+def _choice_entries(kconfig: str, prefix: str) -> set[str]:
+    return {m.lower() for m in re.findall(rf"^config {prefix}(\w+)$", kconfig, re.MULTILINE)}
+
+
+def test_every_model_folder_has_its_files_and_its_choice_entry():
+    assert VARIANTS == ("baremetal", "rtos")
+    for model in VARIANTS:
+        folder = KIT_ROOT / model
+        for name in MODEL_FILES:
+            assert (folder / name).is_file(), f"{model}/{name} is missing"
+        kconfig = (folder / "Kconfig.model").read_text()
+        assert f"config KIT_MODEL_{model.upper()}\n" in kconfig
+        assert f'default "{model}"' in kconfig  # KIT_MODEL_NAME: the folder the build includes
+
+
+def test_every_scenario_choice_has_its_source_and_back():
+    kconfig = (KIT_ROOT / "app" / "scenarios" / "Kconfig").read_text()
+    choices = _choice_entries(kconfig, "KIT_SCENARIO_")
+    sources = {p.stem for p in (KIT_ROOT / "app" / "scenarios").glob("*.cpp")}
+    assert choices == sources
+    for name in sources:
+        assert f'default "{name}" if KIT_SCENARIO_{name.upper()}' in kconfig
+
+
+def test_twister_files_choose_only_existing_models_and_scenarios():
+    scenarios = {p.stem for p in (KIT_ROOT / "app" / "scenarios").glob("*.cpp")}
+    for path in (KIT_ROOT / "app" / "sample.yaml", KIT_ROOT / "tests" / "deployment" / "testcase.yaml"):
+        for name, test in yaml.safe_load(path.read_text())["tests"].items():
+            configs = test.get("extra_configs", [])
+            models = [c for c in configs if c.startswith("CONFIG_KIT_MODEL_")]
+            assert len(models) == 1, f"{path.name} {name}: one model, got {models}"
+            model = models[0].removeprefix("CONFIG_KIT_MODEL_").removesuffix("=y").lower()
+            assert model in VARIANTS and name.split(".")[-1] in (model, "load"), f"{path.name} {name}"
+            for config in configs:
+                if config.startswith("CONFIG_KIT_SCENARIO_"):
+                    scenario = config.removeprefix("CONFIG_KIT_SCENARIO_").removesuffix("=y").lower()
+                    assert scenario in scenarios, f"{path.name} {name}: no scenario {scenario}"
+
+
+def test_every_board_folder_has_what_the_build_checks():
+    for board in (KIT_ROOT / "boards").iterdir():
+        for name in ("kit.conf", "Kconfig.defconfig", "Tables.fpp"):
+            assert (board / name).is_file(), f"boards/{board.name}/{name} is missing"
