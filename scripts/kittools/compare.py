@@ -1,11 +1,10 @@
 # SPDX-License-Identifier: Apache-2.0
 """The variants' runs as comparable numbers (metrics) and as the results file
-(results / as_json, docs/results.md); kittools.report renders them."""
+(results(), docs/results.md); kittools.report renders them."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
 from . import model
 from .console import Run
@@ -75,8 +74,3 @@ def results(found: list[VariantData]) -> model.Results:
                        "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size})
         for d in found
     })
-
-
-def as_json(found: list[VariantData]) -> dict[str, Any]:
-    """The results file; its schema is documented in docs/results.md."""
-    return results(found).to_json()

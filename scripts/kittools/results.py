@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """A run's results file: load and check it, or build it from a twister run.
 
-The schema is documented in docs/results.md; `compare.as_json` writes it.
+The schema is documented in docs/results.md; `compare.results(...).to_json()` writes it.
 """
 
 from __future__ import annotations
@@ -61,15 +61,6 @@ def parse(data: Any, path: str = "results") -> model.Results:
                 raise KitError(f"results file {path}: variant '{name}' lacks the metric '{metric.key}' "
                                f"({metric.label})")
     return results
-
-
-def records_of(variant: model.Variant) -> console.Run:
-    """The console records of a variant, back as a Run."""
-    run = console.Run()
-    for record in variant.records:
-        fields = {k: str(v) for k, v in record.items() if k != "kind"}
-        run.records.append(console.Record(str(record["kind"]), fields))
-    return run
 
 
 def twister_build(twister_out: Path, platform: str, scenario: str) -> Path:

@@ -22,7 +22,7 @@ def test_metrics_convert_cycles_to_microseconds():
 
 
 def test_json_carries_records_and_footprints():
-    data = compare.as_json([_data("baremetal", 1, 2), _data("rtos", 3, 4, slips=2)])
+    data = compare.results([_data("baremetal", 1, 2), _data("rtos", 3, 4, slips=2)]).to_json()
     assert data["schema_version"] == compare.SCHEMA_VERSION
     assert data["variants"]["rtos"]["footprint"]["ram"] == 4
     assert data["variants"]["rtos"]["metrics"]["rg.rg1kHz.slips.count"] == 2
