@@ -26,6 +26,12 @@ const char* contextKindName(Variant::ContextKind kind) {
     return kind == Variant::ContextKind::THREAD ? "thread" : "slice";
 }
 
+// Twister's failure marker: a failed run fails its scenario at once instead
+// of waiting for the time-out
+void failureMarker() {
+    printk("PROJECT EXECUTION FAILED\n");
+}
+
 U32 permille(U64 part, U64 whole) {
     return whole == 0 ? 0 : static_cast<U32>((part * 1000u) / whole);
 }
@@ -208,7 +214,7 @@ void halt(const char* reasonName, unsigned int reason, bool expected) {
     printk("KIT HALT reason=%s code=%u context=%s expected=%s\n", reasonName, reason,
            contextName(Variant::currentContext()), expected ? "yes" : "no");
     if (!expected) {
-        printk("PROJECT EXECUTION FAILED\n");
+        failureMarker();
     }
 }
 
@@ -216,9 +222,7 @@ void end(bool passed) {
     printk("KIT END variant=%s result=%s uptime_ms=%u\n", CONFIG_KIT_MODEL_NAME, passed ? "PASS" : "FAIL",
            static_cast<unsigned>(k_uptime_get_32()));
     if (!passed) {
-        // Twister's failure marker: a failed run fails its scenario at once
-        // instead of waiting for the time-out
-        printk("PROJECT EXECUTION FAILED\n");
+        failureMarker();
     }
 }
 
