@@ -58,7 +58,7 @@ if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
 endif()
 set(KIT_BOARD_DIR "${KIT_ROOT}/boards/${KIT_BOARD}")
 set(KIT_BOARD_TARGET "${KIT_BOARD_SPEC}" CACHE STRING "Board target of this kit build" FORCE)
-foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig Tables.fpp)
+foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig Tables.fpp app.overlay)
     if(NOT EXISTS "${KIT_BOARD_DIR}/${KIT_BOARD_FILE}")
         message(FATAL_ERROR "kit: boards/${KIT_BOARD}/${KIT_BOARD_FILE} is missing; every port has one "
             "(see docs/porting.md).")
@@ -72,10 +72,28 @@ endforeach()
 if(NOT DEFINED CONF_FILE)
     set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_BOARD_DIR}/kit.conf")
 endif()
-if(EXISTS "${KIT_BOARD_DIR}/app.overlay" AND NOT DEFINED DTC_OVERLAY_FILE)
+if(NOT DTC_OVERLAY_FILE)
     set(DTC_OVERLAY_FILE "${KIT_BOARD_DIR}/app.overlay")
 endif()
 set(KCONFIG_ROOT "${KIT_ROOT}/app/Kconfig")
+
+# --- The ground link under QEMU ----------------------------------------
+# The board's link UART (its app.overlay) is QEMU's second serial port: a
+# Unix socket QEMU listens on, without waiting (bytes are dropped while no
+# ground station is connected). The path is per build folder, so parallel
+# runs (twister) never share one, and short, since a socket path is limited
+# to 107 bytes. `kit gds` and the integration suite read it from the cache.
+string(MD5 KIT_LINK_HASH "${CMAKE_BINARY_DIR}")
+string(SUBSTRING "${KIT_LINK_HASH}" 0 12 KIT_LINK_HASH)
+set(KIT_LINK_SOCKET "/tmp/kit-link-${KIT_LINK_HASH}.sock" CACHE STRING
+    "Unix socket of the ground link's UART under QEMU")
+string(LENGTH "${KIT_LINK_SOCKET}" KIT_LINK_SOCKET_LENGTH)
+if(KIT_LINK_SOCKET_LENGTH GREATER 107)
+    message(FATAL_ERROR "kit: KIT_LINK_SOCKET is ${KIT_LINK_SOCKET_LENGTH} bytes long; a Unix socket path "
+        "holds at most 107. Choose a shorter one.")
+endif()
+list(APPEND QEMU_EXTRA_FLAGS
+    -chardev "socket,id=kitlink,path=${KIT_LINK_SOCKET},server=on,wait=off" -serial chardev:kitlink)
 file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/Kconfig")
 file(CONFIGURE OUTPUT "${CMAKE_BINARY_DIR}/Kconfig/Kconfig.kit_board"
     CONTENT "source \"${KIT_BOARD_DIR}/Kconfig.defconfig\"\n")

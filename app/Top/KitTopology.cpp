@@ -5,6 +5,8 @@
 // ======================================================================
 #include "app/Top/KitTopology.hpp"
 #include <Fw/Types/Assert.hpp>
+#include <Svc/FrameAccumulator/FrameDetector/FprimeFrameDetector.hpp>
+#include <zephyr/devicetree.h>
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 
@@ -22,7 +24,7 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
     {"rg1kHz", &rg1kHz, sizeof(rg1kHz)}, {"rg100Hz", &rg100Hz, sizeof(rg100Hz)},
     {"rg10Hz", &rg10Hz, sizeof(rg10Hz)}, {"cmdDisp", &cmdDisp, sizeof(cmdDisp)},
     {"events", &events, sizeof(events)}, {"tlmSend", &tlmSend, sizeof(tlmSend)},
-    {"load", &load, sizeof(load)},
+    {"load", &load, sizeof(load)},       {"comQueue", &comQueue, sizeof(comQueue)},
 };
 
 const char* activeInstanceHolding(const void* address) {
@@ -38,7 +40,36 @@ const char* activeInstanceHolding(const void* address) {
 
 namespace {
 
-void configureTopology() {
+// The ground link's UART: the board's app.overlay chooses it
+#if !DT_HAS_CHOSEN(kit_link_uart)
+#error "kit: the board's app.overlay must choose its link UART (chosen { kit,link-uart = &uartN; })"
+#endif
+
+Svc::FrameDetectors::FprimeFrameDetector s_frameDetector;
+
+// F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
+// the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
+void configureLink(Fw::MemAllocator& allocator) {
+    Svc::BufferManager::BufferBins bins = {};
+    bins.bins[0].bufferSize = Link::bufferSize;
+    bins.bins[0].numBuffers = Link::bufferCount;
+    linkBuffers.setup(Link::bufferManagerId, 0, allocator, bins);
+
+    frameAccumulator.configure(s_frameDetector, 1, allocator, Link::accumulatorSize);
+
+    // Events first, then telemetry. The buffer port (file downlink) is
+    // unused but needs a slot: ComQueue's depth telemetry asserts on a queue
+    // of depth 0.
+    Svc::ComQueue::QueueConfigurationTable queues;
+    queues.entries[0] = {Link::eventDepth, 0};
+    queues.entries[1] = {Link::telemetryDepth, 1};
+    queues.entries[2] = {1, 2};
+    comQueue.configure(queues, 0, allocator);
+
+    linkUart.configure(DEVICE_DT_GET(DT_CHOSEN(kit_link_uart)), Link::baudRate);
+}
+
+void configureTopology(const TopologyState& state) {
     Svc::RateGroupDriver::DividerSet dividers;
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         dividers.dividers[i] = {RATE_GROUPS[i].divisor, RATE_GROUPS[i].offset};
@@ -52,10 +83,12 @@ void configureTopology() {
     rg100Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
     rg10Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
 
-    // Time starts at zero at boot; there is no ground to set it
+    // Time starts at zero at boot (no ground command sets it)
     Os::RawTime now;
     (void)now.now();
     osTime.set_epoch(Fw::Time(0, 0), now);
+
+    configureLink(state.allocator);
 }
 
 }  // namespace
@@ -80,7 +113,7 @@ void setupTopology(const TopologyState& state) {
     connectComponents();
     regCommands();
     configComponents(state);
-    configureTopology();
+    configureTopology(state);
     loadParameters();
     startTasks(state);
 }
@@ -89,6 +122,9 @@ void teardownTopology(const TopologyState& state) {
     stopTasks(state);
     freeThreads(state);
     tearDownComponents(state);
+    comQueue.cleanup();
+    frameAccumulator.cleanup();
+    linkBuffers.cleanup();
 }
 
 }  // namespace Kit

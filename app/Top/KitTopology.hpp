@@ -20,7 +20,7 @@ struct ActiveInstance {
     const void* object;  //!< the instance; its task's entry argument lies inside it
     FwSizeType size;
 };
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 7;
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 8;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr

@@ -16,6 +16,28 @@ module Kit {
     # a longer burst overflows it, which is how an overrun of the load is
     # provoked (dropped and counted, never blocking the rate group)
     constant load = 10
+    @ Downlink: one message per event or telemetry packet, and the link's
+    @ status handshake
+    constant comQueue = 8
+  }
+
+  @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:
+  @ F´'s defaults are sized for a Linux host)
+  module Link {
+    @ Packets each downlink queue holds while the link is busy
+    constant eventDepth = 8
+    constant telemetryDepth = 4
+    @ One pool for every link buffer: a frame of the largest packet
+    @ (FW_COM_BUFFER_MAX_SIZE plus the F´ frame's 8 B header and 4 B CRC)
+    @ and the UART's receive chunks
+    constant bufferSize = 160
+    constant bufferCount = 6
+    @ Uplink bytes the frame accumulator holds while a frame arrives
+    constant accumulatorSize = 320
+    @ The BufferManager's ID, written into the buffers it hands out
+    constant bufferManagerId = 1
+    @ The link UART's line rate (QEMU ignores it; a real board does not)
+    constant baudRate = 115200
   }
 
   # ----------------------------------------------------------------------
@@ -59,6 +81,12 @@ module Kit {
     stack size Stacks.load \
     priority Priorities.load
 
+  @ The downlink's queue: events before telemetry, one packet on the wire at a time
+  instance comQueue: Svc.ComQueue base id 0x2000 \
+    queue size Queues.comQueue \
+    stack size Stacks.comQueue \
+    priority Priorities.comQueue
+
   # ----------------------------------------------------------------------
   # Passive components
   # ----------------------------------------------------------------------
@@ -84,5 +112,22 @@ module Kit {
   instance fatalAdapter: Svc.AssertFatalAdapter base id 0x0900
 
   instance fatalHandler: Kit.FatalHandler base id 0x0A00
+
+  # The ground link: F´'s ComFprime chain (Svc/Subtopologies/ComFprime), on
+  # fprime-zephyr's UART driver for the board's link UART
+  # (chosen kit,link-uart in boards/<board>/app.overlay)
+  instance framer: Svc.FprimeFramer base id 0x2100
+
+  instance comStub: Svc.ComStub base id 0x2200
+
+  instance frameAccumulator: Svc.FrameAccumulator base id 0x2300
+
+  instance deframer: Svc.FprimeDeframer base id 0x2400
+
+  instance router: Svc.FprimeRouter base id 0x2500
+
+  instance linkBuffers: Svc.BufferManager base id 0x2600
+
+  instance linkUart: Zephyr.ZephyrUartDriver base id 0x2700
 
 }

@@ -23,6 +23,14 @@ module Kit {
     instance osTime
     instance fatalAdapter
     instance fatalHandler
+    instance comQueue
+    instance framer
+    instance comStub
+    instance frameAccumulator
+    instance deframer
+    instance router
+    instance linkBuffers
+    instance linkUart
 
     command connections instance cmdDisp
     event connections instance events
@@ -45,7 +53,8 @@ module Kit {
       rg100Hz.RateGroupMemberOut[1] -> monitor.schedIn
       rg100Hz.RateGroupMemberOut[2] -> load.sliceIn
       rg100Hz.RateGroupMemberOut[3] -> faults.schedIn[1]
-      rg100Hz.RateGroupMemberOut[4] -> timing.cycleEnd[1]
+      rg100Hz.RateGroupMemberOut[4] -> linkUart.schedIn
+      rg100Hz.RateGroupMemberOut[5] -> timing.cycleEnd[1]
 
       rateGroupDriver.CycleOut[2] -> rg10Hz.CycleIn
       rg10Hz.RateGroupMemberOut[0] -> timing.cycleStart[2]
@@ -55,7 +64,8 @@ module Kit {
       rg10Hz.RateGroupMemberOut[4] -> cmdDisp.run
       rg10Hz.RateGroupMemberOut[5] -> load.burstIn
       rg10Hz.RateGroupMemberOut[6] -> faults.schedIn[2]
-      rg10Hz.RateGroupMemberOut[7] -> timing.cycleEnd[2]
+      rg10Hz.RateGroupMemberOut[7] -> comQueue.run
+      rg10Hz.RateGroupMemberOut[8] -> timing.cycleEnd[2]
     }
 
     # The background load's burst goes through its own queue
@@ -72,9 +82,50 @@ module Kit {
       cmdDisp.seqCmdStatus[0] -> uplink.cmdResponseIn
     }
 
+    # Events and telemetry pass the kit's tally (Downlink) on their way to
+    # the link: events before telemetry, framed, written to the link UART
     connections Downlink {
       events.PktSend -> downlink.comIn[0]
       tlmSend.PktSend -> downlink.comIn[1]
+      downlink.comOut[0] -> comQueue.comPacketQueueIn[0]
+      downlink.comOut[1] -> comQueue.comPacketQueueIn[1]
+
+      comQueue.dataOut -> framer.dataIn
+      framer.dataReturnOut -> comQueue.dataReturnIn
+      framer.comStatusOut -> comQueue.comStatusIn
+      framer.bufferAllocate -> linkBuffers.bufferGetCallee
+      framer.bufferDeallocate -> linkBuffers.bufferSendIn
+
+      framer.dataOut -> comStub.dataIn
+      comStub.dataReturnOut -> framer.dataReturnIn
+      comStub.comStatusOut -> framer.comStatusIn
+      comStub.drvSendOut -> linkUart.$send
+      linkUart.ready -> comStub.drvConnected
+    }
+
+    # Bytes from the ground: the UART's chunks are accumulated into frames,
+    # checked and unwrapped, and commands go to the dispatcher like the
+    # scripted uplink's
+    connections GroundUplink {
+      linkUart.allocate -> linkBuffers.bufferGetCallee
+      linkUart.deallocate -> linkBuffers.bufferSendIn
+      linkUart.$recv -> comStub.drvReceiveIn
+      comStub.drvReceiveReturnOut -> linkUart.recvReturnIn
+
+      comStub.dataOut -> frameAccumulator.dataIn
+      frameAccumulator.dataReturnOut -> comStub.dataReturnIn
+      frameAccumulator.bufferAllocate -> linkBuffers.bufferGetCallee
+      frameAccumulator.bufferDeallocate -> linkBuffers.bufferSendIn
+
+      frameAccumulator.dataOut -> deframer.dataIn
+      deframer.dataReturnOut -> frameAccumulator.dataReturnIn
+      deframer.dataOut -> router.dataIn
+      router.dataReturnOut -> deframer.dataReturnIn
+      router.bufferAllocate -> linkBuffers.bufferGetCallee
+      router.bufferDeallocate -> linkBuffers.bufferSendIn
+
+      router.commandOut -> cmdDisp.seqCmdBuff[1]
+      cmdDisp.seqCmdStatus[1] -> router.cmdResponseIn
     }
 
     connections Faults {

@@ -2,8 +2,8 @@
 # Port-array sizes, cut to what the kit's topology uses: every port is an
 # object in RAM, so the F´ defaults (sized for a Linux Ref app) cost kilobytes.
 
-@ Members per active rate group (probe start + up to 6 components + probe end)
-constant ActiveRateGroupOutputPorts = 8
+@ Members per active rate group (probe start + up to 7 components + probe end)
+constant ActiveRateGroupOutputPorts = 9
 
 constant PassiveRateGroupOutputPorts = 1
 
@@ -13,15 +13,16 @@ constant RateGroupDriverRateGroupPorts = 3
 @ Components that own commands (cmdDisp, events, controller, load, timing + spare)
 constant CmdDispatcherComponentCommandPorts = 8
 
-@ Command sources: the uplink
-constant CmdDispatcherSequencePorts = 1
+@ Command sources: the scripted uplink (index 0), the ground link (1)
+constant CmdDispatcherSequencePorts = 2
 
 constant SeqDispatcherSequencerPorts = 1
 constant CmdSplitterPorts = CmdDispatcherSequencePorts
 constant StaticMemoryAllocations = 1
 constant HealthPingPorts = 1
 constant FileDownCompletePorts = 1
-constant ComQueueComPorts = 1
+@ Downlink queues: events, telemetry
+constant ComQueueComPorts = 2
 constant ComQueueBufferPorts = 1
 constant BufferRepeaterOutputPorts = 1
 constant DpManagerNumPorts = 1

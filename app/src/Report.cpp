@@ -9,6 +9,8 @@
 #include "app/Top/KitTopology.hpp"
 #include "app/src/HeapMonitor.hpp"
 
+#include <zephyr/device.h>
+#include <zephyr/devicetree.h>
 #include <zephyr/kernel.h>
 #include <zephyr/sys/printk.h>
 #include <zephyr/version.h>
@@ -116,6 +118,10 @@ void banner() {
         static_cast<unsigned>(CONFIG_KIT_TICK_HZ), static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC),
         static_cast<unsigned>(TickClock::cyclesPerSecond()), static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT),
         static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
+}
+
+void linkReady() {
+    printk("KIT LINK ready uart=%s\n", DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name);
 }
 
 bool commands(const Uplink::Frame* frames, FwSizeType count) {

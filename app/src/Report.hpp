@@ -21,6 +21,9 @@ namespace Report {
 //! commits and the timing conditions
 void banner();
 
+//! The LINK line: the ground link is up, on the board's link UART
+void linkReady();
+
 //! RG, TASK and HIST lines of every rate group over a segment of `ticks`
 //! ticks; true when each ran exactly its cycles, without slips
 bool rateGroups(U32 ticks);

@@ -30,7 +30,7 @@ int main() {
     Kit::Variant::prepareStacks();
     Os::init();
     s_allocator.registerForFprime();
-    Kit::TopologyState state;
+    const Kit::TopologyState state = {s_allocator};
     Kit::setupTopology(state);
     Kit::HeapMonitor::markInitialized();
     // The probe's own cost, measured before the run so it does not disturb it

@@ -7,7 +7,8 @@ module Kit {
   # baremetal TaskRunner runs tasks in this order within a pass; the RTOS
   # variant maps it onto Zephyr's preemptive priorities (lower is more urgent)
   # in rtos/Os/PriorityMap.hpp. The tick (the main loop) is above all of them
-  # in both. Rate groups by rate, then the services, then the background load.
+  # in both. Rate groups by rate, then the services, then the downlink, then
+  # the background load.
   module Priorities {
     constant rg1kHz = 12
     constant rg100Hz = 11
@@ -15,12 +16,13 @@ module Kit {
     constant cmdDisp = 6
     constant events = 5
     constant tlmSend = 4
+    constant comQueue = 3
     constant load = 2
   }
 
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
   # stack and ignores them). Zephyr's thread pool has one slot size for all:
-  # CONFIG_DYNAMIC_THREAD_STACK_SIZE of rtos.conf beside this file. A nominal
+  # CONFIG_DYNAMIC_THREAD_STACK_SIZE, set in Kconfig.defconfig beside this file. A nominal
   # run's high-water marks ("KIT STACK" lines) top out at 1324 B (cmdDisp),
   # but an F´ assert in a command handler needs more than 1792 B of the
   # dispatcher's stack: mps2/an385's MPU guard caught that overflow, which
@@ -32,6 +34,7 @@ module Kit {
     constant cmdDisp = 2048
     constant events = 2048
     constant tlmSend = 2048
+    constant comQueue = 2048
     constant load = 2048
   }
 

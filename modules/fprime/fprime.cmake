@@ -39,6 +39,21 @@ function(fprime_zephyr_native_fpp)
     endforeach()
 endfunction()
 
+# An upstream the kit patches (modules/<project>/patches/*.patch, applied by
+# scripts/setup.sh after west update) must carry every patch: refuse a
+# workspace where one is missing rather than build the unfixed code.
+function(fprime_zephyr_require_patches UPSTREAM_PATH PATCH_DIR)
+    file(GLOB PATCHES "${PATCH_DIR}/*.patch")
+    foreach(PATCH IN LISTS PATCHES)
+        execute_process(COMMAND git -C "${UPSTREAM_PATH}" apply --reverse --check "${PATCH}"
+            RESULT_VARIABLE PATCH_MISSING OUTPUT_QUIET ERROR_QUIET)
+        if(PATCH_MISSING)
+            message(FATAL_ERROR "kit: ${UPSTREAM_PATH} lacks the kit's patch ${PATCH}.\n"
+                "Run scripts/setup.sh (it applies the patches after west update).")
+        endif()
+    endforeach()
+endfunction()
+
 macro(fprime_zephyr_setup)
     if(NOT CONFIG_FPRIME)
         message(FATAL_ERROR "fprime_zephyr_setup(): CONFIG_FPRIME is off (modules/fprime/Kconfig)")

@@ -9,6 +9,7 @@ import selectors
 import signal
 import subprocess
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from .workspace import KIT_ROOT, KitError, environment
@@ -58,53 +59,84 @@ def ends_run(line: str) -> bool:
     return line.startswith(("KIT END", "KIT HALT")) or HALT_MARKER in line
 
 
-def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
-    """Run the build's `run` target (QEMU) until the firmware's end line or a
-    fatal report, then stop QEMU. The console is read from the build's QEMU
-    pipe (a twister build) or from stdio. Returns the console text."""
-    pipe = qemu_pipe(build_dir)
-    pipe_fds = _open_pipe(pipe) if pipe is not None else None
-    process = subprocess.Popen(run_command(build_dir), cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
-                               stdout=subprocess.DEVNULL if pipe_fds else subprocess.PIPE,
-                               stderr=subprocess.STDOUT, start_new_session=True)
-    if pipe_fds is not None:
-        fd = pipe_fds[0]
-    else:
-        assert process.stdout is not None
-        fd = process.stdout.fileno()
-    lines: list[str] = []
-    partial = b""
-    finished = False
-    deadline = time.monotonic() + timeout_s
-    selector = selectors.DefaultSelector()
-    selector.register(fd, selectors.EVENT_READ)
-    try:
+class Qemu:
+    """The build's `run` target (QEMU) in the background, its console read
+    line by line from the build's QEMU pipe (a twister build) or from stdio.
+    A context manager: leaving it stops QEMU (its whole process group)."""
+
+    def __init__(self, build_dir: Path) -> None:
+        self.build_dir = build_dir
+        self.lines: list[str] = []
+        self._partial = b""
+        pipe = qemu_pipe(build_dir)
+        self._pipe_fds = _open_pipe(pipe) if pipe is not None else None
+        self._process = subprocess.Popen(
+            run_command(build_dir), cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
+            stdout=subprocess.DEVNULL if self._pipe_fds else subprocess.PIPE, stderr=subprocess.STDOUT,
+            start_new_session=True)
+        if self._pipe_fds is not None:
+            self._fd = self._pipe_fds[0]
+        else:
+            assert self._process.stdout is not None
+            self._fd = self._process.stdout.fileno()
+        self._selector = selectors.DefaultSelector()
+        self._selector.register(self._fd, selectors.EVENT_READ)
+
+    def __enter__(self) -> Qemu:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.stop()
+
+    def running(self) -> bool:
+        return self._process.poll() is None
+
+    def read_until(self, done: Callable[[str], bool], timeout_s: float) -> bool:
+        """Read console lines until one satisfies `done` (True), QEMU exits
+        or `timeout_s` passes (False)."""
+        deadline = time.monotonic() + timeout_s
         # Raw reads, not readline(): a buffered reader can hold the end line
         # in its buffer while select() waits on a pipe that stays empty.
-        while time.monotonic() < deadline and not finished:
-            if not selector.select(timeout=1.0):
-                if process.poll() is not None:
-                    break
+        while time.monotonic() < deadline:
+            if not self._selector.select(timeout=min(1.0, max(0.0, deadline - time.monotonic()))):
+                if not self.running():
+                    return False
                 continue
             try:
-                chunk = os.read(fd, 65536)
+                chunk = os.read(self._fd, 65536)
             except BlockingIOError:
                 continue
             if not chunk:
-                break
-            *complete, partial = (partial + chunk).split(b"\n")
+                return False
+            *complete, self._partial = (self._partial + chunk).split(b"\n")
+            found = False
             for raw in complete:
                 line = raw.decode(errors="replace").rstrip("\r")
-                lines.append(line)
-                finished = finished or ends_run(line)
-    finally:
-        selector.close()
-        if process.poll() is None:
-            os.killpg(process.pid, signal.SIGTERM)
-            process.wait(timeout=10)
-        for pipe_fd in pipe_fds or ():
+                self.lines.append(line)
+                found = found or done(line)
+            if found:
+                return True
+        return False
+
+    def text(self) -> str:
+        return "\n".join(self.lines)
+
+    def stop(self) -> None:
+        self._selector.close()
+        if self._process.poll() is None:
+            os.killpg(self._process.pid, signal.SIGTERM)
+            self._process.wait(timeout=10)
+        for pipe_fd in self._pipe_fds or ():
             os.close(pipe_fd)
-    text = "\n".join(lines)
+        self._pipe_fds = None
+
+
+def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
+    """Run the build's `run` target (QEMU) until the firmware's end line or a
+    fatal report, then stop QEMU. Returns the console text."""
+    with Qemu(build_dir) as qemu:
+        finished = qemu.read_until(ends_run, timeout_s)
+    text = qemu.text()
     log.write_text(text + "\n")
     if not finished:
         raise KitError(f"the run in {build_dir} did not reach its end line within {timeout_s:.0f} s; log {log}:\n"

@@ -23,12 +23,17 @@ U32 Downlink::eventCount(FwEventIdType id) const {
 }
 
 void Downlink::comIn_handler(FwIndexType portNum, Fw::ComBuffer& data, U32 context) {
-    (void)context;
     FW_ASSERT(portNum == EVENTS || portNum == TELEMETRY, static_cast<FwAssertArgType>(portNum));
     m_packets[portNum]++;
-    if (portNum != EVENTS) {
-        return;
+    if (portNum == EVENTS) {
+        tallyEvent(data);
     }
+    if (isConnected_comOut_OutputPort(portNum)) {
+        comOut_out(portNum, data, context);
+    }
+}
+
+void Downlink::tallyEvent(Fw::ComBuffer& data) {
     // Event packet: descriptor, event ID, time, arguments
     data.resetDeser();
     FwPacketDescriptorType descriptor = 0;

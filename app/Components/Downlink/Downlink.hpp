@@ -30,6 +30,7 @@ class Downlink final : public DownlinkComponentBase {
 
   private:
     void comIn_handler(FwIndexType portNum, Fw::ComBuffer& data, U32 context) override;
+    void tallyEvent(Fw::ComBuffer& data);
 
     U32 m_packets[2];
     U32 m_malformed;

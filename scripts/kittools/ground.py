@@ -1,0 +1,169 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The ground station: a kit build under QEMU with fprime-gds on its link.
+
+`GroundStation` boots a build of the `ground` scenario (its `run` target),
+waits for the firmware's LINK line, starts fprime-gds on the link's Unix
+socket through the kit's adapter (kittools/gds_adapter.py) with the build's
+own dictionary, and stops both on exit. Each station has its own ZeroMQ
+endpoints, so stations never hear each other. `kit gds` and the integration
+suite (tests/integration) use it.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from .runner import Qemu, ends_run
+from .workspace import KitError, environment
+
+BOOT_TIMEOUT_S = 60.0
+GDS_TIMEOUT_S = 60.0
+# fprime-gds prints this once its every application is up
+GDS_READY = "F prime is now running"
+# The firmware's line once its link is up (app/src/Report.cpp)
+LINK_READY = "KIT LINK ready"
+
+
+@dataclass(frozen=True)
+class Link:
+    """What a build says about its ground link."""
+
+    build_dir: Path
+    socket: Path
+    dictionary: Path
+
+
+def _cache_value(build_dir: Path, name: str) -> str | None:
+    cache = build_dir / "CMakeCache.txt"
+    if not cache.is_file():
+        raise KitError(f"{build_dir} is not a configured kit build (no CMakeCache.txt)")
+    match = re.search(rf"^{name}:[A-Z]+=(.*)$", cache.read_text(), re.MULTILINE)
+    return match.group(1) if match else None
+
+
+def link_of(build_dir: Path) -> Link:
+    """The link socket and the dictionary of a built kit build."""
+    socket = _cache_value(build_dir, "KIT_LINK_SOCKET")
+    if not socket:
+        raise KitError(f"{build_dir} has no ground link (no KIT_LINK_SOCKET): is it a kit build of this version?")
+    dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
+    if not dictionaries:
+        raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
+    return Link(build_dir, Path(socket), dictionaries[0])
+
+
+def scenario_of(build_dir: Path) -> str | None:
+    config = build_dir / "zephyr" / ".config"
+    if not config.is_file():
+        return None
+    match = re.search(r'^CONFIG_KIT_SCENARIO="(.*)"$', config.read_text(), re.MULTILINE)
+    return match.group(1) if match else None
+
+
+def _check_socket_free(socket: Path) -> None:
+    """A live socket at the link's path means another QEMU of this build is
+    running: two would steal each other's link."""
+    import socket as sockets
+
+    if not socket.exists():
+        return
+    probe = sockets.socket(sockets.AF_UNIX, sockets.SOCK_STREAM)
+    try:
+        probe.connect(str(socket))
+    except OSError:
+        return  # stale: QEMU unlinks and rebinds it
+    finally:
+        probe.close()
+    raise KitError(f"the link socket {socket} is in use: another QEMU of this build is running. Stop it first.")
+
+
+class GroundStation:
+    """QEMU running a build, and fprime-gds connected to its link."""
+
+    def __init__(self, build_dir: Path, logs: Path, gui: bool = False, gui_port: int = 5000) -> None:
+        self.link = link_of(build_dir)
+        if scenario_of(build_dir) != "ground":
+            raise KitError(f"{build_dir} does not play the ground scenario (CONFIG_KIT_SCENARIO_GROUND=y): "
+                           "its firmware would not wait for the ground")
+        if shutil.which("fprime-gds", path=environment().get("PATH")) is None:
+            raise KitError("fprime-gds is not installed: run scripts/setup.sh (it installs the pinned fprime-gds)")
+        self.logs = logs
+        self.gui = gui
+        self.gui_port = gui_port
+        self._transport_dir = Path(tempfile.mkdtemp(prefix="kit-gds-"))
+        self.qemu: Qemu | None = None
+        self._gds: subprocess.Popen[bytes] | None = None
+
+    @property
+    def transport(self) -> list[str]:
+        """This station's ZeroMQ endpoints, for every client (fprime-cli, pytest)."""
+        return ["--zmq-transport", f"ipc://{self._transport_dir}/in", f"ipc://{self._transport_dir}/out"]
+
+    def client_arguments(self) -> list[str]:
+        return ["--dictionary", str(self.link.dictionary), *self.transport]
+
+    def __enter__(self) -> GroundStation:
+        try:
+            self.start()
+        except BaseException:
+            self.stop()
+            raise
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.stop()
+
+    def start(self) -> None:
+        _check_socket_free(self.link.socket)
+        self.logs.mkdir(parents=True, exist_ok=True)
+        self.qemu = Qemu(self.link.build_dir)
+        self.qemu.read_until(lambda line: line.startswith(LINK_READY) or ends_run(line), BOOT_TIMEOUT_S)
+        if not any(line.startswith(LINK_READY) for line in self.qemu.lines):
+            raise KitError(f"the firmware in {self.link.build_dir} did not bring its link up:\n{self.qemu.text()}")
+        command = [
+            "fprime-gds", "--no-app", "--dictionary", str(self.link.dictionary),
+            "--communication-selection", "kit-unix", "--kit-socket", str(self.link.socket),
+            "--framing-selection", "fprime", *self.transport, "--logs", str(self.logs),
+            "--gui", "html" if self.gui else "none", "--gui-port", str(self.gui_port),
+            "--file-storage-directory", str(self.logs / "files"),
+        ]
+        self.gds_output = self.logs / "fprime-gds.out"
+        with self.gds_output.open("wb") as output:
+            self._gds = subprocess.Popen(command, env=environment(), stdin=subprocess.DEVNULL, stdout=output,
+                                         stderr=subprocess.STDOUT, start_new_session=True)
+        self._wait_for_gds(command)
+
+    def _wait_for_gds(self, command: list[str]) -> None:
+        assert self._gds is not None
+        deadline = time.monotonic() + GDS_TIMEOUT_S
+        while time.monotonic() < deadline and self._gds.poll() is None:
+            if GDS_READY in self.gds_output.read_text(errors="replace"):
+                return
+            time.sleep(0.2)
+        tail = "\n".join(self.gds_output.read_text(errors="replace").splitlines()[-20:])
+        raise KitError(f"fprime-gds did not start ({' '.join(command)}):\n{tail}")
+
+    def console(self) -> str:
+        return self.qemu.text() if self.qemu else ""
+
+    def stop(self) -> None:
+        if self._gds is not None and self._gds.poll() is None:
+            # fprime-gds stops its applications on SIGINT, as on Ctrl-C
+            os.killpg(self._gds.pid, signal.SIGINT)
+            try:
+                self._gds.wait(timeout=15)
+            except subprocess.TimeoutExpired:
+                os.killpg(self._gds.pid, signal.SIGKILL)
+                self._gds.wait()
+        self._gds = None
+        if self.qemu is not None:
+            self.qemu.stop()
+        shutil.rmtree(self._transport_dir, ignore_errors=True)
