@@ -4,9 +4,9 @@
 // \brief  Set up and tear down the kit's deployment (shared by both variants)
 // ======================================================================
 #include "app/Top/KitTopology.hpp"
+#include <zephyr/devicetree.h>
 #include <Fw/Types/Assert.hpp>
 #include <Svc/FrameAccumulator/FrameDetector/FprimeFrameDetector.hpp>
-#include <zephyr/devicetree.h>
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 

@@ -3,7 +3,8 @@
 
   kit compare   build both variants, run them under QEMU, write the comparison and its report
   kit report    turn a results file into report.md / .html / .json / .csv (optionally against a baseline)
-  kit test      twister suite under QEMU, determinism, budget, host unit tests, tooling tests
+  kit test      twister suite under QEMU, determinism, budget, ground-link integration, host and tooling tests
+  kit gds       boot a board and model under QEMU with fprime-gds on its ground link
   kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
 """
 
@@ -13,12 +14,13 @@ import argparse
 import functools
 import json
 import sys
+import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, report, results, style, testing
+from . import budget, ground, report, results, style, testing
 from .board import REFERENCE_BOARD, new_board
-from .workspace import KIT_ROOT, KitError, check_board, check_provisioned
+from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant
 
 
 def _say(message: str) -> None:
@@ -93,6 +95,8 @@ def cmd_test(args: argparse.Namespace) -> int:
             steps.append((f"budget: {board} results against its baseline",
                           functools.partial(testing.check_budget, board, log_dir, _budget(args),
                                             args.update_baseline)))
+        steps.append(("ground link: integration suite through fprime-gds",
+                      lambda: testing.run_integration(log_dir)))
     if not args.skip_host:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:
@@ -106,6 +110,29 @@ def cmd_test(args: argparse.Namespace) -> int:
         total.add(tally)
     print(f"total: {total.passed} passed, {total.failed} failed")
     return 0 if total.failed == 0 and total.passed > 0 else 1
+
+
+def cmd_gds(args: argparse.Namespace) -> int:
+    board = args.board
+    check_board(board)
+    check_variant(args.model)
+    check_provisioned()
+    logs = ground.ground_build_dir(board, args.model).with_name(
+        ground.ground_build_dir(board, args.model).name + "-logs")
+    _say(f"building {board} {args.model} (ground scenario) ...")
+    build_dir = ground.build_ground(board, args.model, logs / "build.log")
+    with ground.GroundStation(build_dir, logs, gui=True, gui_port=args.port) as station:
+        _say(f"QEMU runs {build_dir}; its link: {station.link.socket}")
+        _say(f"fprime-gds: http://127.0.0.1:{args.port} (dictionary {station.link.dictionary})")
+        _say(f"from a shell: fprime-cli command-send Kit.cmdDisp.CMD_NO_OP {' '.join(station.client_arguments())}")
+        _say("Ctrl-C stops both")
+        try:
+            while station.qemu is not None and station.qemu.running():
+                time.sleep(0.5)
+        except KeyboardInterrupt:
+            _say("stopping")
+            return 0
+        raise KitError(f"QEMU stopped on its own; its console:\n{station.console()[-3000:]}")
 
 
 def cmd_new_board(args: argparse.Namespace) -> int:
@@ -140,6 +167,11 @@ def parser() -> argparse.ArgumentParser:
     t.add_argument("--update-baseline", action="store_true",
                    help="make this run's results tests/baselines/<board>.json (review and commit the change)")
     t.set_defaults(func=cmd_test)
+    g = sub.add_parser("gds", help="boot a board and model under QEMU with fprime-gds on its ground link")
+    g.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
+    g.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
+    g.add_argument("--port", type=int, default=5000, help="the GDS web page's port (default: 5000)")
+    g.set_defaults(func=cmd_gds)
     n = sub.add_parser("new-board", help="scaffold boards/<board>/ for a new board and add it to the suite")
     n.add_argument("board", metavar="BOARD", help="board target as west build -b takes it (e.g. mps2/an385)")
     n.add_argument("--from", "--reference", dest="reference", metavar="REFERENCE", default=REFERENCE_BOARD,

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .runner import Qemu, ends_run
-from .workspace import KitError, environment
+from .workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 BOOT_TIMEOUT_S = 60.0
 GDS_TIMEOUT_S = 60.0
@@ -167,3 +167,29 @@ class GroundStation:
         if self.qemu is not None:
             self.qemu.stop()
         shutil.rmtree(self._transport_dir, ignore_errors=True)
+
+
+def ground_build_dir(board: str, model: str) -> Path:
+    """Where `kit gds` builds a board and model's ground scenario."""
+    return KIT_ROOT / "build" / f"gds-{board_dir_name(board)}-{model}"
+
+
+def build_ground(board: str, model: str, log: Path) -> Path:
+    """Build (or bring up to date) the ground scenario of a board and model
+    with west, as a user would; returns the build folder."""
+    build_dir = ground_build_dir(board, model)
+    command = ["west", "build", "-b", board, "-d", str(build_dir), str(KIT_ROOT / "app"), "--",
+               f"-DCONFIG_KIT_MODEL_{model.upper()}=y", "-DCONFIG_KIT_SCENARIO_GROUND=y"]
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("w") as output:
+        code = subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=output,
+                              stderr=subprocess.STDOUT).returncode
+    if code != 0:
+        tail = "\n".join(log.read_text(errors="replace").splitlines()[-25:])
+        raise KitError(f"building {board} {model} failed ({' '.join(command)}); log {log}:\n{tail}")
+    return build_dir
+
+
+def ground_builds(twister_out: Path) -> list[Path]:
+    """The ground scenario's builds twister made (kit.ground.*, build only)."""
+    return sorted(elf.parent.parent for elf in twister_out.glob("**/kit.ground.*/zephyr/zephyr.elf"))

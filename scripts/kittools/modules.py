@@ -18,44 +18,51 @@ from typing import Any
 
 from .workspace import KIT_ROOT, KitError, environment
 
-CATEGORIES = (
-    "F´ framework",
-    "F´ services",
-    "OS layer (fprime-baremetal / fprime-zephyr / kit)",
-    "kit deployment and components",
-    "Zephyr kernel, arch, drivers",
-    "libc (picolibc, libgcc)",
-    "libstdc++",
-    "unattributed",
-)
+FRAMEWORK = "F´ framework"
+SERVICES = "F´ services"
+GROUND_LINK = "F´ ground link (ComFprime chain, UART driver)"
+OS_LAYER = "OS layer (fprime-baremetal / fprime-zephyr / kit)"
+KIT = "kit deployment and components"
+ZEPHYR = "Zephyr kernel, arch, drivers"
+LIBC = "libc (picolibc, libgcc)"
+LIBSTDCXX = "libstdc++"
+UNATTRIBUTED = "unattributed"
+CATEGORIES = (FRAMEWORK, SERVICES, GROUND_LINK, OS_LAYER, KIT, ZEPHYR, LIBC, LIBSTDCXX, UNATTRIBUTED)
+
+# The components of the ground link (app/Top/instances.fpp): F´'s ComFprime
+# chain and fprime-zephyr's UART driver, by folder and by class name
+_LINK_COMPONENTS = ("ComQueue", "FprimeFramer", "FprimeDeframer", "FrameAccumulator", "FprimeRouter", "ComStub",
+                    "BufferManager", "ZephyrUartDriver", "FprimeFrameDetector")
 
 _BY_PATH = (
     # (substring of the source path, category); first match wins
-    ("/deps/fprime-baremetal/", 2),
-    ("/deps/fprime-zephyr/", 2),
-    ("/rtos/", 2),
-    ("/baremetal/", 2),
-    ("/F-Prime/Svc/", 1),
-    ("/deps/fprime/Svc/", 1),
-    ("/deps/fprime/Drv/", 1),
-    ("/F-Prime/", 0),
-    ("/deps/fprime/", 0),
-    ("/app/", 3),
-    ("/deps/zephyr/", 4),
-    ("/zephyr/", 4),
-    ("libstdc++", 6),
-    ("libsupc++", 6),
-    ("/libgcc/", 5),
-    ("/build/gcc-", 6),  # the toolchain's own build of its C++ runtime
-    ("newlib", 5),
-    ("picolibc", 5),
-    ("/libc/", 5),
+    *((f"/Svc/{name}/", GROUND_LINK) for name in _LINK_COMPONENTS),
+    ("/Drv/ZephyrUartDriver/", GROUND_LINK),
+    ("/deps/fprime-baremetal/", OS_LAYER),
+    ("/deps/fprime-zephyr/", OS_LAYER),
+    ("/rtos/", OS_LAYER),
+    ("/baremetal/", OS_LAYER),
+    ("/F-Prime/Svc/", SERVICES),
+    ("/deps/fprime/Svc/", SERVICES),
+    ("/deps/fprime/Drv/", SERVICES),
+    ("/F-Prime/", FRAMEWORK),
+    ("/deps/fprime/", FRAMEWORK),
+    ("/app/", KIT),
+    ("/deps/zephyr/", ZEPHYR),
+    ("/zephyr/", ZEPHYR),
+    ("libstdc++", LIBSTDCXX),
+    ("libsupc++", LIBSTDCXX),
+    ("/libgcc/", LIBC),
+    ("/build/gcc-", LIBSTDCXX),  # the toolchain's own build of its C++ runtime
+    ("newlib", LIBC),
+    ("picolibc", LIBC),
+    ("/libc/", LIBC),
 )
 
 _BY_SYMBOL = (
-    ("_ZN3Kit", 3), ("_ZTVN3Kit", 3), ("_ZN3Svc", 1), ("_ZTVN3Svc", 1), ("_ZN2Fw", 0), ("_ZTVN2Fw", 0),
-    ("_ZN2Os9Baremetal", 2), ("_ZN2Os6Zephyr", 2), ("_ZN2Os", 0), ("_ZTVN2Os", 0), ("_ZNSt", 6), ("_ZSt", 6),
-    ("__cxa", 6), ("__gnu_cxx", 6),
+    ("_ZN3Kit", KIT), ("_ZTVN3Kit", KIT), ("_ZN3Svc", SERVICES), ("_ZTVN3Svc", SERVICES), ("_ZN2Fw", FRAMEWORK),
+    ("_ZTVN2Fw", FRAMEWORK), ("_ZN2Os9Baremetal", OS_LAYER), ("_ZN2Os6Zephyr", OS_LAYER), ("_ZN2Os", FRAMEWORK),
+    ("_ZTVN2Os", FRAMEWORK), ("_ZNSt", LIBSTDCXX), ("_ZSt", LIBSTDCXX), ("__cxa", LIBSTDCXX), ("__gnu_cxx", LIBSTDCXX),
 )
 
 
@@ -67,14 +74,18 @@ def classify(identifier: str, group: str = "") -> str:
     """Category of one leaf of a rom/ram report (its 'identifier', within
     the top-level group named `group`)."""
     path = _GROUP_PREFIX.get(group, "") + identifier.replace("\\", "/")
-    for needle, index in _BY_PATH:
+    for needle, category in _BY_PATH:
         if needle in path:
-            return CATEGORIES[index]
+            return category
     symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
-    for prefix, index in _BY_SYMBOL:
+    # Mangled C++ names spell each class name out (e.g. _ZTVN3Svc8ComQueueE)
+    if symbol.startswith(("_ZN3Svc", "_ZTVN3Svc", "_ZN6Zephyr", "_ZTVN6Zephyr")) and any(
+            name in symbol for name in _LINK_COMPONENTS):
+        return GROUND_LINK
+    for prefix, category in _BY_SYMBOL:
         if symbol.startswith(prefix):
-            return CATEGORIES[index]
-    return CATEGORIES[-1]
+            return category
+    return UNATTRIBUTED
 
 
 def _leaves(node: dict) -> Iterator[dict]:

@@ -9,12 +9,13 @@ import json
 import re
 import subprocess
 import sys
+import time
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, results, runner
+from . import budget, console, ground, results, runner
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
 
@@ -187,6 +188,39 @@ def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
             print(f"[kit]   {platform} {scenario}: sample hash {expected}, then {again}: "
                   f"{'identical' if same else 'DIFFERENT'}", flush=True)
             tally.add(Tally(passed=1) if same else Tally(failed=1))
+    return tally
+
+
+INTEGRATION = KIT_ROOT / "tests" / "integration"
+
+
+def run_integration(log_dir: Path) -> Tally:
+    """tests/integration (F´'s integration-test API, through fprime-gds's
+    pytest plugin) against every ground build twister made, one at a time:
+    each booted under QEMU with fprime-gds on its link (kittools.ground).
+    The kit's own runner, not twister's pytest harness: that harness owns
+    one console and knows nothing of a second serial port or a GDS."""
+    builds = ground.ground_builds(TWISTER_OUT)
+    if not builds:
+        raise KitError(f"twister built no ground scenario (kit.ground.*) under {TWISTER_OUT}")
+    tally = Tally()
+    for build in builds:
+        name = "_".join(build.relative_to(TWISTER_OUT).parts[:1] + (build.name,))
+        logs = log_dir / f"integration.{name}"
+        xml = logs / "pytest.xml"
+        started = time.monotonic()
+        with ground.GroundStation(build, logs) as station:
+            _run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
+                  *station.client_arguments(), "--logs", str(logs / "api"), f"--junitxml={xml}"],
+                 logs / "pytest.log")
+            console_text = station.console()
+        (logs / "console.log").write_text(console_text + "\n")
+        if not xml.is_file():
+            raise KitError(f"the integration suite wrote no report for {build}; see {logs / 'pytest.log'}")
+        result = junit_tally(xml)
+        print(f"[kit]   {name}: {result.passed} passed, {result.failed} failed "
+              f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
+        tally.add(result)
     return tally
 
 
