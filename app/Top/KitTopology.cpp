@@ -6,7 +6,6 @@
 #include "app/Top/KitTopology.hpp"
 #include <zephyr/devicetree.h>
 #include <Fw/Types/Assert.hpp>
-#include <Svc/FrameAccumulator/FrameDetector/FprimeFrameDetector.hpp>
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 
@@ -45,8 +44,6 @@ namespace {
 #error "kit: the board's app.overlay must choose its link UART (chosen { kit,link-uart = &uartN; })"
 #endif
 
-Svc::FrameDetectors::FprimeFrameDetector s_frameDetector;
-
 // F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
 // the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
 void configureLink(Fw::MemAllocator& allocator) {
@@ -55,7 +52,9 @@ void configureLink(Fw::MemAllocator& allocator) {
     bins.bins[0].numBuffers = Link::bufferCount;
     linkBuffers.setup(Link::bufferManagerId, 0, allocator, bins);
 
-    frameAccumulator.configure(s_frameDetector, 1, allocator, Link::accumulatorSize);
+    // F´'s F´-protocol detector, wrapped to count what it rejects
+    linkHealth.configure(Link::accumulatorSize);
+    frameAccumulator.configure(linkHealth.detector(), 1, allocator, Link::accumulatorSize);
 
     // Events first, then telemetry. The buffer port (file downlink) is
     // unused but needs a slot: ComQueue's depth telemetry asserts on a queue

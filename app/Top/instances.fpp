@@ -33,7 +33,8 @@ module Kit {
     constant bufferSize = 160
     constant bufferCount = 6
     @ Uplink bytes the frame accumulator holds while a frame arrives
-    constant accumulatorSize = 320
+    @ (in the dictionary: the ground tools need it)
+    dictionary constant accumulatorSize = 320
     @ The BufferManager's ID, written into the buffers it hands out
     constant bufferManagerId = 1
     @ The link UART's line rate (QEMU ignores it; a real board does not)
@@ -129,5 +130,8 @@ module Kit {
   instance linkBuffers: Svc.BufferManager base id 0x2600
 
   instance linkUart: Zephyr.ZephyrUartDriver base id 0x2700
+
+  @ What the uplink rejected, by reason (F´'s chain drops some silently)
+  instance linkHealth: Kit.LinkHealth base id 0x2800
 
 }

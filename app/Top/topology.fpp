@@ -31,6 +31,7 @@ module Kit {
     instance router
     instance linkBuffers
     instance linkUart
+    instance linkHealth
 
     command connections instance cmdDisp
     event connections instance events
@@ -65,7 +66,8 @@ module Kit {
       rg10Hz.RateGroupMemberOut[5] -> load.burstIn
       rg10Hz.RateGroupMemberOut[6] -> faults.schedIn[2]
       rg10Hz.RateGroupMemberOut[7] -> comQueue.run
-      rg10Hz.RateGroupMemberOut[8] -> timing.cycleEnd[2]
+      rg10Hz.RateGroupMemberOut[8] -> linkHealth.schedIn
+      rg10Hz.RateGroupMemberOut[9] -> timing.cycleEnd[2]
     }
 
     # The background load's burst goes through its own queue
@@ -126,6 +128,10 @@ module Kit {
 
       router.commandOut -> cmdDisp.seqCmdBuff[1]
       cmdDisp.seqCmdStatus[1] -> router.cmdResponseIn
+
+      # Packets of a type the router does not route are counted, not lost
+      router.unknownDataOut -> linkHealth.unknownIn
+      linkHealth.unknownReturnOut -> router.fileBufferReturnIn
     }
 
     connections Faults {

@@ -2,8 +2,8 @@
 # Port-array sizes, cut to what the kit's topology uses: every port is an
 # object in RAM, so the F´ defaults (sized for a Linux Ref app) cost kilobytes.
 
-@ Members per active rate group (probe start + up to 7 components + probe end)
-constant ActiveRateGroupOutputPorts = 9
+@ Members per active rate group (probe start + up to 8 components + probe end)
+constant ActiveRateGroupOutputPorts = 10
 
 constant PassiveRateGroupOutputPorts = 1
 

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, ground, results, runner
+from . import budget, console, fuzz, ground, results, runner
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
 
@@ -221,7 +221,39 @@ def run_integration(log_dir: Path) -> Tally:
         print(f"[kit]   {name}: {result.passed} passed, {result.failed} failed "
               f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
         tally.add(result)
+        tally.add(fuzz_build(build, name, logs))
     return tally
+
+
+# Uplink fuzzing: a fixed seed, so two runs send the same bytes and must
+# give the same counts (the seed is in every record)
+FUZZ_SEED = 20261201
+FUZZ_INVALID_FRAMES = 10_000
+
+
+def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and fuzz its uplink (kittools.fuzz); the outcome
+    goes to fuzz.json beside the other logs."""
+    link = ground.link_of(build)
+    started = time.monotonic()
+    with runner.Qemu(build) as qemu:
+        if not qemu.read_until(lambda line: line.startswith(ground.LINK_READY), ground.BOOT_TIMEOUT_S):
+            raise KitError(f"{build} did not bring its link up:\n{qemu.text()}")
+
+        def halted() -> bool:
+            qemu.read_until(lambda line: False, 0.001)
+            return any(runner.ends_run(line) or "Assert" in line for line in qemu.lines)
+
+        outcome = fuzz.run(link.socket, link.dictionary, FUZZ_SEED, FUZZ_INVALID_FRAMES, halted=halted)
+        (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
+    record = outcome.to_json()
+    (logs / "fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
+    failures = outcome.failures()
+    print(f"[kit]   {name}: fuzzing (seed {outcome.seed}): {outcome.invalid_sent} invalid frames "
+          f"{dict(sorted(outcome.sent.items()))}, {outcome.noops_answered}/{outcome.noops_sent} NO_OPs answered, "
+          f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
+          f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}", flush=True)
+    return Tally(failed=1) if failures else Tally(passed=1)
 
 
 BASELINES = KIT_ROOT / "tests" / "baselines"

@@ -1,0 +1,44 @@
+# SPDX-License-Identifier: Apache-2.0
+
+module Kit {
+
+    @ The ground link's health: what the uplink rejected, by reason, as
+    @ telemetry. F´'s FrameAccumulator drops bytes that start no frame and
+    @ frames whose checksum fails without a trace, and F´'s FprimeRouter
+    @ drops packets of a type it does not know; the kit's frame detector
+    @ (CountingFrameDetector, in this folder) counts the first two, and the
+    @ router hands the third here.
+    passive component LinkHealth {
+
+        @ Telemetry out (10 Hz rate group)
+        sync input port schedIn: Svc.Sched
+
+        @ Packets of a type the router does not route (its unknownDataOut)
+        sync input port unknownIn: Svc.ComDataWithContext
+
+        @ Their buffers, back to the router (its fileBufferReturnIn)
+        output port unknownReturnOut: Fw.BufferSend
+
+        time get port timeCaller
+
+        telemetry port tlmOut
+
+        @ Frames the detector found whole, with a good checksum
+        telemetry FramesDetected: U32 id 0
+
+        @ Frames with a start word and a length that fits, whose checksum
+        @ failed: corrupted, or truncated and run into the next frame
+        telemetry BadChecksums: U32 id 1
+
+        @ Bytes discarded because no frame starts at them (garbage, and the
+        @ rest of every rejected frame)
+        telemetry BytesDiscarded: U32 id 2
+
+        @ Frames whose length field exceeds the accumulator (F´ also emits
+        @ FrameAccumulator's FrameDetectionSizeError)
+        telemetry Oversized: U32 id 3
+
+        @ Well-framed packets of a type the router does not route
+        telemetry UnknownPackets: U32 id 4
+    }
+}
