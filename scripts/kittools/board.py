@@ -49,8 +49,9 @@ TODOS: dict[str, tuple[str, ...]] = {
         "steps 6-7). Every stack must be <= DYNAMIC_THREAD_STACK_SIZE (Kconfig.defconfig; the build checks).",
     ),
     "app.overlay": (
-        "Devicetree copied from the reference board: check the console UART (zephyr,console)",
-        "and the timers against this board's devicetree, or delete this file if not needed.",
+        "Devicetree copied from the reference board: choose the ground link's UART (kit,link-uart:",
+        "not the console; under QEMU the machine's second serial port) and check the console UART",
+        "(zephyr,console) and the timers against this board's devicetree (docs/porting.md, step 3).",
     ),
 }
 DEFAULT_TODO = ("Copied from the reference board: check this file for the new board (docs/porting.md).",)

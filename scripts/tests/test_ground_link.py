@@ -1,0 +1,117 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The ground link's tooling without QEMU: the fuzzer's frames against
+fprime-gds's own framing, its generator's promises, and the fprime-gds
+adapter against a local Unix socket."""
+
+from __future__ import annotations
+
+import random
+import socket
+import threading
+from pathlib import Path
+
+import pytest
+from fprime_gds.common.communication.framing import FpFramerDeframer
+
+from kittools import fuzz, ground
+from kittools.gds_adapter import UnixSocketAdapter
+from kittools.workspace import KitError
+
+DEPLOYMENT = fuzz.Deployment(noop=0x500, setpoint=0x1100, opcodes=frozenset({0x500, 0x1100}), accumulator_size=320)
+
+
+def test_fuzzer_frames_are_what_fprime_gds_deframes():
+    FpFramerDeframer.set_constants()
+    payload = fuzz.command(0x500)
+    packets, rest, _ = FpFramerDeframer().deframe_all(fuzz.frame(payload), no_copy=False)
+    assert packets == [payload] and rest == b""
+
+
+def test_invalid_frames_are_invalid_and_seeded():
+    def batch(seed: int) -> list[bytes]:
+        rng = random.Random(seed)
+        return [fuzz.invalid_frame(kind, rng, DEPLOYMENT) for kind in fuzz.INVALID_KINDS for _ in range(50)]
+
+    assert batch(7) == batch(7)
+    assert batch(7) != batch(8)
+    FpFramerDeframer.set_constants()
+    rng = random.Random(1)
+    for kind in ("garbage", "bad_checksum", "truncated", "oversized", "length_wraps"):
+        for _ in range(200):
+            data = fuzz.invalid_frame(kind, rng, DEPLOYMENT)
+            packets, _, _ = FpFramerDeframer().deframe_all(data + fuzz.PADDING, no_copy=False)
+            assert packets == [], f"{kind} frame {data.hex()} deframed"
+            if kind == "garbage":
+                assert not set(data) & fuzz.START_WORD_BYTES
+            if kind in ("oversized", "length_wraps"):
+                (length,) = fuzz.HEADER.unpack_from(data)[1:]
+                assert length + 12 > DEPLOYMENT.accumulator_size
+
+
+def test_bad_payloads_are_well_framed():
+    FpFramerDeframer.set_constants()
+    rng = random.Random(2)
+    for kind in fuzz.FRAMED_KINDS:
+        data = fuzz.invalid_frame(kind, rng, DEPLOYMENT)
+        packets, _, _ = FpFramerDeframer().deframe_all(data, no_copy=False)
+        assert len(packets) == 1, kind
+
+
+def test_outcome_names_every_shortfall():
+    outcome = fuzz.Outcome(seed=1, noops_sent=2, noops_answered=1, halted=True)
+    outcome.sent["oversized"] = 1
+    outcome.telemetry = {"Kit.linkHealth.FramesDetected": 2, "Kit.linkHealth.Oversized": 1,
+                         "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 0}
+    failures = outcome.failures()
+    assert any("NO_OPs answered: 1, expected 2" in f for f in failures)
+    assert any("asserted or halted" in f for f in failures)
+    assert len(failures) == 2
+    assert outcome.to_json()["seed"] == 1
+
+
+def test_adapter_reconnects_and_never_raises(tmp_path: Path):
+    path = tmp_path / "link.sock"
+    adapter = UnixSocketAdapter(str(path))
+    adapter.open()  # nothing listens yet: no error
+    assert adapter.read(timeout=0.05) == b""
+    assert adapter.write(b"x") is False
+    server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    server.bind(str(path))
+    server.listen(1)
+    received: list[bytes] = []
+
+    def serve() -> None:
+        connection, _ = server.accept()
+        received.append(connection.recv(16))
+        connection.sendall(b"down")
+        connection.close()
+
+    thread = threading.Thread(target=serve)
+    thread.start()
+    adapter._next_attempt = 0.0  # retry now rather than after RETRY_SECONDS
+    assert adapter.write(b"up") is True
+    assert adapter.read(timeout=2.0) == b"down"
+    thread.join()
+    assert received == [b"up"]
+    assert adapter.read(timeout=0.2) == b""  # the peer closed: dropped, no exception
+    adapter.close()
+    server.close()
+
+
+def test_adapter_refuses_a_path_that_is_not_a_socket(tmp_path: Path):
+    (tmp_path / "file").write_text("")
+    with pytest.raises(ValueError):
+        UnixSocketAdapter.check_arguments(str(tmp_path / "file"))
+    with pytest.raises(ValueError):
+        UnixSocketAdapter.check_arguments(None)
+
+
+def test_a_build_without_a_link_is_refused(tmp_path: Path):
+    with pytest.raises(KitError, match="not a configured kit build"):
+        ground.link_of(tmp_path)
+    (tmp_path / "CMakeCache.txt").write_text("CMAKE_BUILD_TYPE:STRING=\n")
+    with pytest.raises(KitError, match="no ground link"):
+        ground.link_of(tmp_path)
+    (tmp_path / "CMakeCache.txt").write_text("KIT_LINK_SOCKET:STRING=/tmp/x.sock\n")
+    with pytest.raises(KitError, match="no F´ dictionary"):
+        ground.link_of(tmp_path)
