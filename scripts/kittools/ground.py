@@ -39,6 +39,7 @@ class Link:
     build_dir: Path
     socket: Path
     dictionary: Path
+    board: str  # the board target the build is for
 
 
 def _cache_value(build_dir: Path, name: str) -> str | None:
@@ -57,7 +58,7 @@ def link_of(build_dir: Path) -> Link:
     dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
     if not dictionaries:
         raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-    return Link(build_dir, Path(socket), dictionaries[0])
+    return Link(build_dir, Path(socket), dictionaries[0], _cache_value(build_dir, "KIT_BOARD_TARGET") or "")
 
 
 def scenario_of(build_dir: Path) -> str | None:
