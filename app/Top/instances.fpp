@@ -9,7 +9,10 @@ module Kit {
   # the services absorb a burst of a few messages.
   module Queues {
     constant rateGroup = 2
-    constant cmdDisp = 4
+    @ The dispatcher's queue holds commands from both uplinks and its 10 Hz
+    @ telemetry call, which asserts when the queue is full: 4 was overrun
+    @ when the ground sent a burst of commands (uplink fuzzing, mps2/an385)
+    constant cmdDisp = 8
     constant events = 8
     constant tlmSend = 2
     # 8 slices (~80 ms at 100 Hz) or a burst of 8 with room for the next slice;

@@ -13,6 +13,7 @@
 #include <zephyr/devicetree.h>
 #include <zephyr/kernel.h>
 #include <zephyr/sys/printk.h>
+#include <zephyr/sys/util.h>
 #include <zephyr/version.h>
 
 #ifndef CONFIG_QEMU_ICOUNT_SHIFT
@@ -86,7 +87,10 @@ bool rateGroups(U32 ticks) {
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         const RateGroupRecord& rg = timing.record(i);
         const U32 expected = expectedCycles(i, ticks);
-        const bool ok = (ticks == 0 || rg.cycles == expected) && rg.slips == 0 && rg.lostStamps == 0 && !rg.running;
+        // A miss fails the run where the model is expected to hold its
+        // deadlines on this board (CONFIG_KIT_DEADLINES_EXPECTED, app/Kconfig)
+        const bool deadlinesOk = rg.slips == 0 || !IS_ENABLED(CONFIG_KIT_DEADLINES_EXPECTED);
+        const bool ok = (ticks == 0 || rg.cycles == expected) && deadlinesOk && rg.lostStamps == 0 && !rg.running;
         passed = passed && ok;
         printk("KIT RG name=%s hz=%u cycles=%u expected=%u slips=%u late_starts=%u lost_stamps=%u", rg.spec.name,
                static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor), static_cast<unsigned>(rg.cycles),

@@ -270,6 +270,8 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
                 raise KitError(f"no answer to NO_OP {outcome.noops_sent} within {REPLY_TIMEOUT_S:.0f} s "
                                f"(seed {seed})")
         if outcome.halted:
+            outcome.noops_answered = link.events[NOOP_EVENT]
+            outcome.events = link.events
             return outcome
         # The counters after the last batch: the last NO_OP's answer means
         # every byte before it was processed, and the second LinkHealth
