@@ -115,3 +115,24 @@ def test_a_build_without_a_link_is_refused(tmp_path: Path):
     (tmp_path / "CMakeCache.txt").write_text("KIT_LINK_SOCKET:STRING=/tmp/x.sock\n")
     with pytest.raises(KitError, match="no F´ dictionary"):
         ground.link_of(tmp_path)
+
+
+def test_kit_gds_refuses_an_unknown_board_or_model(capsys):
+    from kittools import cli
+
+    assert cli.main(["gds", "--board", "nucleo_f429zi"]) == 2
+    assert "no kit port" in capsys.readouterr().err
+    with pytest.raises(SystemExit):  # argparse: the models are the model folders
+        cli.main(["gds", "--model", "superloop"])
+
+
+def test_a_build_of_another_scenario_is_not_a_ground_station(tmp_path: Path):
+    (tmp_path / "CMakeCache.txt").write_text(
+        "KIT_LINK_SOCKET:STRING=/tmp/x.sock\nKIT_BOARD_TARGET:STRING=qemu_cortex_m3\n")
+    dictionary = tmp_path / "build-artifacts" / "zephyr" / "dict" / "KitTopologyDictionary.json"
+    dictionary.parent.mkdir(parents=True)
+    dictionary.write_text("{}")
+    (tmp_path / "zephyr").mkdir()
+    (tmp_path / "zephyr" / ".config").write_text('CONFIG_KIT_SCENARIO="nominal"\n')
+    with pytest.raises(KitError, match="does not play the ground scenario"):
+        ground.GroundStation(tmp_path, tmp_path / "logs")
