@@ -193,6 +193,10 @@ def main(argv: list[str] | None = None) -> int:
     except KitError as error:
         print(f"kit: error: {error}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        # Whatever the command started (QEMU, fprime-gds) was stopped on the way out
+        print("kit: interrupted", file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":
