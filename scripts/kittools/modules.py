@@ -34,6 +34,12 @@ CATEGORIES = (FRAMEWORK, SERVICES, GROUND_LINK, OS_LAYER, KIT, ZEPHYR, LIBC, LIB
 _LINK_COMPONENTS = ("ComQueue", "FprimeFramer", "FprimeDeframer", "FrameAccumulator", "FprimeRouter", "ComStub",
                     "BufferManager", "ZephyrUartDriver", "FprimeFrameDetector")
 
+# ... and the link's instances in the topology (app/Top/instances.fpp), whose
+# objects hold the link's static RAM (the UART's receive ring among them)
+_LINK_INSTANCES = ("comQueue", "framer", "comStub", "frameAccumulator", "deframer", "router", "linkBuffers",
+                   "linkUart", "linkHealth")
+_LINK_INSTANCE_SYMBOLS = frozenset(f"_ZN3Kit{len(name)}{name}E" for name in _LINK_INSTANCES)
+
 _BY_PATH = (
     # (substring of the source path, category); first match wins
     *((f"/Svc/{name}/", GROUND_LINK) for name in _LINK_COMPONENTS),
@@ -78,6 +84,8 @@ def classify(identifier: str, group: str = "") -> str:
         if needle in path:
             return category
     symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
+    if symbol in _LINK_INSTANCE_SYMBOLS:
+        return GROUND_LINK
     # Mangled C++ names spell each class name out (e.g. _ZTVN3Svc8ComQueueE)
     if symbol.startswith(("_ZN3Svc", "_ZTVN3Svc", "_ZN6Zephyr", "_ZTVN6Zephyr")) and any(
             name in symbol for name in _LINK_COMPONENTS):

@@ -38,3 +38,20 @@ def test_every_layer_is_recognised():
 
 def test_breakdown_accounts_for_every_byte():
     assert sum(modules.breakdown(_tree()).values()) == 100
+
+
+def test_the_ground_link_is_its_own_layer():
+    link = modules.GROUND_LINK
+    # its components' code, by folder, generated or not
+    assert modules.classify("F-Prime/Svc/ComQueue/ComQueueComponentAc.cpp/f", "OUTPUT_DIR") == link
+    assert modules.classify("deps/fprime/Svc/FrameAccumulator/FrameAccumulator.cpp/f", "WORKSPACE") == link
+    assert modules.classify("deps/fprime-zephyr/fprime-zephyr/Drv/ZephyrUartDriver/ZephyrUartDriver.cpp/f",
+                            "WORKSPACE") == link
+    # path-less: its vtables and its instances' objects (static RAM)
+    assert modules.classify(":/_ZTVN3Svc8ComQueueE") == link
+    assert modules.classify(":/_ZN3Kit8linkUartE") == link
+    assert modules.classify(":/_ZN3Kit10linkHealthE") == link
+    # not the link: another instance, another service
+    assert modules.classify(":/_ZN3Kit6timingE") == modules.KIT
+    dispatcher = "deps/fprime/Svc/CmdDispatcher/CommandDispatcherImpl.cpp/f"
+    assert modules.classify(dispatcher, "WORKSPACE") == modules.SERVICES
