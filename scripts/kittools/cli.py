@@ -117,10 +117,10 @@ def cmd_gds(args: argparse.Namespace) -> int:
     check_board(board)
     check_variant(args.model)
     check_provisioned()
-    logs = ground.ground_build_dir(board, args.model).with_name(
-        ground.ground_build_dir(board, args.model).name + "-logs")
+    build_dir = ground.ground_build_dir(board, args.model)
+    logs = build_dir.with_name(build_dir.name + "-logs")
     _say(f"building {board} {args.model} (ground scenario) ...")
-    build_dir = ground.build_ground(board, args.model, logs / "build.log")
+    ground.build_ground(board, args.model, logs / "build.log")
     with ground.GroundStation(build_dir, logs, gui=True, gui_port=args.port) as station:
         _say(f"QEMU runs {build_dir}; its link: {station.link.socket}")
         _say(f"fprime-gds: http://127.0.0.1:{args.port} (dictionary {station.link.dictionary})")

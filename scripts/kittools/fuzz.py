@@ -42,7 +42,6 @@ OPCODE = struct.Struct(">I")  # FwOpcodeType
 FW_PACKET_COMMAND = 0
 FW_PACKET_TELEM = 1
 FW_PACKET_LOG = 2
-FW_PACKET_FILE = 3  # routed to file uplink, which the kit does not have
 # Closes every batch: a frame still waiting for its claimed length (a
 # truncated one) is completed by these and rejected, never left pending
 PADDING = bytes(80)
@@ -111,6 +110,8 @@ def invalid_frame(kind: str, rng: random.Random, deployment: Deployment) -> byte
         # own detector asserted on these (app/Components/LinkHealth)
         return HEADER.pack(START_WORD, rng.randint(0xFFFFFFF4, 0xFFFFFFFF)) + rng.randbytes(rng.randint(0, 16))
     if kind == "unknown_packet":
+        # Not a command, and not a file packet (3): the router drops those
+        # silently when, as here, there is no file uplink
         descriptor = rng.choice([FW_PACKET_TELEM, FW_PACKET_LOG, rng.randint(4, 0xFFFF)])
         return frame(DESCRIPTOR.pack(descriptor) + rng.randbytes(rng.randint(0, 16)))
     if kind == "bad_opcode":

@@ -15,6 +15,7 @@ import os
 import re
 import shutil
 import signal
+import socket
 import subprocess
 import tempfile
 import time
@@ -52,13 +53,13 @@ def _cache_value(build_dir: Path, name: str) -> str | None:
 
 def link_of(build_dir: Path) -> Link:
     """The link socket and the dictionary of a built kit build."""
-    socket = _cache_value(build_dir, "KIT_LINK_SOCKET")
-    if not socket:
+    socket_path = _cache_value(build_dir, "KIT_LINK_SOCKET")
+    if not socket_path:
         raise KitError(f"{build_dir} has no ground link (no KIT_LINK_SOCKET): is it a kit build of this version?")
     dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
     if not dictionaries:
         raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-    return Link(build_dir, Path(socket), dictionaries[0], _cache_value(build_dir, "KIT_BOARD_TARGET") or "")
+    return Link(build_dir, Path(socket_path), dictionaries[0], _cache_value(build_dir, "KIT_BOARD_TARGET") or "")
 
 
 def scenario_of(build_dir: Path) -> str | None:
@@ -69,21 +70,19 @@ def scenario_of(build_dir: Path) -> str | None:
     return match.group(1) if match else None
 
 
-def _check_socket_free(socket: Path) -> None:
+def _check_socket_free(path: Path) -> None:
     """A live socket at the link's path means another QEMU of this build is
     running: two would steal each other's link."""
-    import socket as sockets
-
-    if not socket.exists():
+    if not path.exists():
         return
-    probe = sockets.socket(sockets.AF_UNIX, sockets.SOCK_STREAM)
+    probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
-        probe.connect(str(socket))
+        probe.connect(str(path))
     except OSError:
         return  # stale: QEMU unlinks and rebinds it
     finally:
         probe.close()
-    raise KitError(f"the link socket {socket} is in use: another QEMU of this build is running. Stop it first.")
+    raise KitError(f"the link socket {path} is in use: another QEMU of this build is running. Stop it first.")
 
 
 class GroundStation:
@@ -171,7 +170,8 @@ class GroundStation:
 
 
 def ground_build_dir(board: str, model: str) -> Path:
-    """Where `kit gds` builds a board and model's ground scenario."""
+    """Where `kit gds` builds a board and model's ground scenario (its logs
+    go beside it, `<folder>-logs`)."""
     return KIT_ROOT / "build" / f"gds-{board_dir_name(board)}-{model}"
 
 
