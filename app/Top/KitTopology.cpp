@@ -4,6 +4,7 @@
 // \brief  Set up and tear down the kit's deployment (shared by both variants)
 // ======================================================================
 #include "app/Top/KitTopology.hpp"
+#include <zephyr/device.h>
 #include <zephyr/devicetree.h>
 #include <Fw/Types/Assert.hpp>
 #include "app/Components/Timing/TickClock.hpp"
@@ -65,7 +66,11 @@ void configureLink(Fw::MemAllocator& allocator) {
     queues.entries[2] = {1, 2};
     comQueue.configure(queues, 0, allocator);
 
-    linkUart.configure(DEVICE_DT_GET(DT_CHOSEN(kit_link_uart)), Link::baudRate);
+    // fprime-zephyr's driver returns from configure() without a word when
+    // the device is not ready, leaving a link that never speaks: stop here
+    const struct device* const uart = DEVICE_DT_GET(DT_CHOSEN(kit_link_uart));
+    FW_ASSERT(device_is_ready(uart));
+    linkUart.configure(uart, Link::baudRate);
 }
 
 void configureTopology(const TopologyState& state) {
