@@ -188,7 +188,10 @@ class Downlink:
         self._pending = b""
         self.events: Counter[str] = Counter()
         self.telemetry: dict[str, int] = {}
-        self.updates: Counter[str] = Counter()
+        # The deployment's time (F´ time tags, s) of the newest sample of each
+        # channel and the newest event of each name
+        self.telemetry_time: dict[str, float] = {}
+        self.event_time: dict[str, float] = {}
         self._socket = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
         try:
             self._socket.connect(str(socket_path))
@@ -226,16 +229,19 @@ class Downlink:
             if descriptor == FW_PACKET_LOG:
                 for event in self._events.decode_api(body):
                     self.events[event.template.get_full_name()] += 1
+                    self.event_time[event.template.get_full_name()] = event.get_time().get_float()
             elif descriptor == FW_PACKET_TELEM:
                 for sample in self._channels.decode_api(body):
                     self.telemetry[sample.template.get_full_name()] = sample.get_val()
-                    self.updates[sample.template.get_full_name()] += 1
+                    self.telemetry_time[sample.template.get_full_name()] = sample.get_time().get_float()
 
 
 NOOP_EVENT = "Kit.cmdDisp.NoOpReceived"
 REPLY_TIMEOUT_S = 20.0
 # LinkHealth writes every 100 ms of virtual time, changed or not
 HEARTBEAT_CHANNEL = "Kit.linkHealth.FramesDetected"
+# Three 10 Hz cycles: the dispatcher's call, then the telemetry service's
+SETTLE_S = 0.3
 # Telemetry read at the end
 COUNT_CHANNELS = ("Kit.linkHealth.FramesDetected", "Kit.linkHealth.BadChecksums", "Kit.linkHealth.BytesDiscarded",
                   "Kit.linkHealth.Oversized", "Kit.linkHealth.UnknownPackets", "Kit.cmdDisp.CommandErrors",
@@ -275,11 +281,14 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
             outcome.events = link.events
             return outcome
         # The counters after the last batch: the last NO_OP's answer means
-        # every byte before it was processed, and the second LinkHealth
-        # sample after it was taken after that. The dispatcher's channels
-        # are sent on change only: their last value is the final one.
-        rounds = link.updates[HEARTBEAT_CHANNEL] + 2
-        if not link.pump(lambda: link.updates[HEARTBEAT_CHANNEL] >= rounds, REPLY_TIMEOUT_S):
+        # every byte before it was processed. Telemetry waits behind events
+        # in the downlink queue, so samples arriving after that answer can
+        # be older than it: wait, by the deployment's own time tags, for a
+        # LinkHealth sample taken SETTLE_S after it. The dispatcher's
+        # channels are sent on change only; their final values (written by
+        # its 10 Hz call after the last command) were queued before that.
+        settled = link.event_time[NOOP_EVENT] + SETTLE_S
+        if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
             raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
         outcome.noops_answered = link.events[NOOP_EVENT]
         outcome.events = link.events
