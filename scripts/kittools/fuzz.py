@@ -134,6 +134,8 @@ class Outcome:
     events: Counter[str] = field(default_factory=Counter)
     telemetry: dict[str, int] = field(default_factory=dict)
     halted: bool = False
+    #: NO_OPs (their number in the run) not answered within REPLY_TIMEOUT_S
+    missed: list[int] = field(default_factory=list)
 
     @property
     def invalid_sent(self) -> int:
@@ -160,13 +162,16 @@ class Outcome:
             found.append(f"LinkHealth.BadChecksums: {bad}, expected at least {self.sent['bad_checksum']}")
         if self.halted:
             found.append("the deployment asserted or halted")
+        if self.missed:
+            found.append(f"no answer within {REPLY_TIMEOUT_S:.0f} s to NO_OPs {self.missed}")
         return found
 
     def to_json(self) -> dict[str, Any]:
         return {"seed": self.seed, "invalid_sent": self.invalid_sent, "sent": dict(sorted(self.sent.items())),
                 "noops_sent": self.noops_sent, "noops_answered": self.noops_answered,
                 "rejected": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())},
-                "events": dict(sorted(self.events.items())), "halted": self.halted, "failures": self.failures()}
+                "events": dict(sorted(self.events.items())), "halted": self.halted, "missed": self.missed,
+                "failures": self.failures()}
 
 
 class Downlink:
@@ -238,6 +243,8 @@ class Downlink:
 
 NOOP_EVENT = "Kit.cmdDisp.NoOpReceived"
 REPLY_TIMEOUT_S = 20.0
+# Unanswered NO_OPs after which the run stops (it has failed already)
+MISSED_ANSWERS_MAX = 3
 # LinkHealth writes every 100 ms of virtual time, changed or not
 HEARTBEAT_CHANNEL = "Kit.linkHealth.FramesDetected"
 # Three 10 Hz cycles: the dispatcher's call, then the telemetry service's
@@ -273,9 +280,13 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
             outcome.noops_sent += 1
             replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
             outcome.halted = halted()
-            if not replied and not outcome.halted:
-                raise KitError(f"no answer to NO_OP {outcome.noops_sent} within {REPLY_TIMEOUT_S:.0f} s "
-                               f"(seed {seed})")
+            if not replied:
+                # A missed answer fails the run (Outcome.failures); go on,
+                # since the next batch's bytes may free what holds it up,
+                # but not forever
+                outcome.missed.append(outcome.noops_sent)
+                if len(outcome.missed) >= MISSED_ANSWERS_MAX:
+                    break
         if outcome.halted:
             outcome.noops_answered = link.events[NOOP_EVENT]
             outcome.events = link.events
@@ -287,7 +298,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
         # LinkHealth sample taken SETTLE_S after it. The dispatcher's
         # channels are sent on change only; their final values (written by
         # its 10 Hz call after the last command) were queued before that.
-        settled = link.event_time[NOOP_EVENT] + SETTLE_S
+        settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
         if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
             raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
         outcome.noops_answered = link.events[NOOP_EVENT]

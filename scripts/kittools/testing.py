@@ -250,7 +250,13 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
 
         reference = link.board.split("/")[0] == REFERENCE_BOARD
         frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
-        outcome = fuzz.run(link.socket, link.dictionary, FUZZ_SEED, frames, halted=halted)
+        try:
+            outcome = fuzz.run(link.socket, link.dictionary, FUZZ_SEED, frames, halted=halted)
+        except KitError as error:
+            # A failed check, not the end of `kit test`
+            (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
+            print(f"[kit]   {name}: fuzzing (seed {FUZZ_SEED}): FAIL: {error}", flush=True)
+            return Tally(failed=1)
         (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
     record = outcome.to_json()
     (logs / "fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
