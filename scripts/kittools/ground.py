@@ -22,7 +22,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from .runner import Qemu, ends_run
+from .runner import Qemu, cache_value, ends_run
 from .workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 BOOT_TIMEOUT_S = 60.0
@@ -43,23 +43,15 @@ class Link:
     board: str  # the board target the build is for
 
 
-def _cache_value(build_dir: Path, name: str) -> str | None:
-    cache = build_dir / "CMakeCache.txt"
-    if not cache.is_file():
-        raise KitError(f"{build_dir} is not a configured kit build (no CMakeCache.txt)")
-    match = re.search(rf"^{name}:[A-Z]+=(.*)$", cache.read_text(), re.MULTILINE)
-    return match.group(1) if match else None
-
-
 def link_of(build_dir: Path) -> Link:
     """The link socket and the dictionary of a built kit build."""
-    socket_path = _cache_value(build_dir, "KIT_LINK_SOCKET")
+    socket_path = cache_value(build_dir, "KIT_LINK_SOCKET")
     if not socket_path:
         raise KitError(f"{build_dir} has no ground link (no KIT_LINK_SOCKET): is it a kit build of this version?")
     dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
     if not dictionaries:
         raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-    return Link(build_dir, Path(socket_path), dictionaries[0], _cache_value(build_dir, "KIT_BOARD_TARGET") or "")
+    return Link(build_dir, Path(socket_path), dictionaries[0], cache_value(build_dir, "KIT_BOARD_TARGET") or "")
 
 
 def scenario_of(build_dir: Path) -> str | None:

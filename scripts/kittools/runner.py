@@ -27,15 +27,21 @@ def run_command(build_dir: Path) -> list[str]:
     return ["cmake", "--build", str(build_dir), "--target", "run"]
 
 
+def cache_value(build_dir: Path, name: str) -> str | None:
+    """A variable of a build's CMake cache, or None when it is not set."""
+    cache = build_dir / "CMakeCache.txt"
+    if not cache.is_file():
+        raise KitError(f"{build_dir} is not a configured build (no CMakeCache.txt)")
+    match = re.search(rf"^{name}:[A-Z]+=(.+)$", cache.read_text(), re.MULTILINE)
+    return match.group(1) if match else None
+
+
 def qemu_pipe(build_dir: Path) -> Path | None:
     """The FIFO a twister build sends its console to (QEMU_PIPE in its CMake
     cache: QEMU reads <pipe>.in and writes <pipe>.out), or None: a plain
     build's console is on stdio."""
-    cache = build_dir / "CMakeCache.txt"
-    if not cache.is_file():
-        raise KitError(f"{build_dir} is not a configured build (no CMakeCache.txt)")
-    match = re.search(r"^QEMU_PIPE:[A-Z]+=(.+)$", cache.read_text(), re.MULTILINE)
-    return Path(match.group(1)) if match else None
+    pipe = cache_value(build_dir, "QEMU_PIPE")
+    return Path(pipe) if pipe else None
 
 
 def _open_pipe(pipe: Path) -> tuple[int, int]:

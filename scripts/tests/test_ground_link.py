@@ -107,7 +107,7 @@ def test_adapter_refuses_a_path_that_is_not_a_socket(tmp_path: Path):
 
 
 def test_a_build_without_a_link_is_refused(tmp_path: Path):
-    with pytest.raises(KitError, match="not a configured kit build"):
+    with pytest.raises(KitError, match="not a configured build"):
         ground.link_of(tmp_path)
     (tmp_path / "CMakeCache.txt").write_text("CMAKE_BUILD_TYPE:STRING=\n")
     with pytest.raises(KitError, match="no ground link"):
