@@ -54,7 +54,7 @@ void configureLink(Fw::MemAllocator& allocator) {
     linkBuffers.setup(Link::bufferManagerId, 0, allocator, bins);
 
     // F´'s F´-protocol detector, wrapped to count what it rejects
-    linkHealth.configure(Link::accumulatorSize);
+    linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight);
     frameAccumulator.configure(linkHealth.detector(), 1, allocator, Link::accumulatorSize);
 
     // Events first, then telemetry. The buffer port (file downlink) is

@@ -9,9 +9,11 @@ module Kit {
   # the services absorb a burst of a few messages.
   module Queues {
     constant rateGroup = 2
-    @ The dispatcher's queue holds commands from both uplinks and its 10 Hz
-    @ telemetry call, which asserts when the queue is full: 4 was overrun
-    @ when the ground sent a burst of commands (uplink fuzzing, mps2/an385)
+    @ The dispatcher's queue holds commands from both uplinks (each in
+    @ flight takes one slot: the command, then its answer), and its 10 Hz
+    @ telemetry call. It asserts when full: the ground's share is capped
+    @ (Link.commandsInFlight, checked in app/src/ModelChecks.cpp), which
+    @ leaves room for the call and the scripted uplink
     constant cmdDisp = 8
     constant events = 8
     constant tlmSend = 2
@@ -40,6 +42,9 @@ module Kit {
     dictionary constant accumulatorSize = 320
     @ The BufferManager's ID, written into the buffers it hands out
     constant bufferManagerId = 1
+    @ Ground commands the dispatcher may hold at once (LinkHealth drops
+    @ more, counted): a fuzzing batch's worth, four and its NO_OP
+    constant commandsInFlight = 5
     @ The link UART's line rate (QEMU ignores it; a real board does not)
     constant baudRate = 115200
   }

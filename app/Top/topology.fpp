@@ -126,8 +126,12 @@ module Kit {
       router.bufferAllocate -> linkBuffers.bufferGetCallee
       router.bufferDeallocate -> linkBuffers.bufferSendIn
 
-      router.commandOut -> cmdDisp.seqCmdBuff[1]
-      cmdDisp.seqCmdStatus[1] -> router.cmdResponseIn
+      # Ground commands pass the link's health component, which keeps no
+      # more in flight than the dispatcher's queue can hold
+      router.commandOut -> linkHealth.commandIn
+      linkHealth.commandOut -> cmdDisp.seqCmdBuff[1]
+      cmdDisp.seqCmdStatus[1] -> linkHealth.commandStatusIn
+      linkHealth.commandStatusOut -> router.cmdResponseIn
 
       # Packets of a type the router does not route are counted, not lost
       router.unknownDataOut -> linkHealth.unknownIn

@@ -1,13 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  ground.cpp
-// \brief  The deployment serves the ground link, and nothing else
+// \brief  The deployment serves the ground link, and measures on request
 // ======================================================================
 //
 // No built-in command sequence: every command comes up the ground link
 // (fprime-gds, `kit gds`, the integration suite in tests/integration), and
-// the run never ends (a tick count of 0), as a flight deployment's does.
+// the run never ends, as a flight deployment's does. The one thing it adds
+// is the serial-load sweep's measurement: when the ground asks
+// (Timing.MEASURE_SEGMENT), the main loop stops at the next hyperperiod,
+// measures the requested segment under whatever load the ground applies
+// (commands up the link, or Load.SET_DOWNLINK's packets down it) and prints
+// its SWEEP lines, then serves on. scripts/kittools/serial_sweep.py drives it.
 
+#include "app/Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
@@ -15,10 +21,47 @@
 namespace Kit {
 namespace Scenario {
 
+namespace {
+
+bool segmentRequested() {
+    return timing.segmentRequested();
+}
+
+// The axis' name and unit in the SWEEP record
+Report::SweepPoint pointOf(const Timing::Segment& segment) {
+    const bool uplink = segment.axis == SegmentAxis::UPLINK;
+    return {uplink ? "uplink" : "downlink",
+            segment.point,
+            segment.level,
+            uplink ? "cmd/s" : "pkt/s",
+            0,
+            segment.ticks,
+            0,
+            0};
+}
+
+}  // namespace
+
 bool run(const Context& context) {
     (void)context;
+    timing.serveSegments(Session::hyperperiod());
     Report::linkReady();
-    Session::run(0);
+    // The one loop without a bound: a flight deployment serves until power-off
+    for (;;) {
+        Session::serve(segmentRequested);
+        const Timing::Segment segment = timing.takeSegment();
+        Session::nextSegment();
+        Report::SweepPoint point = pointOf(segment);
+        const U32 processedBefore = load.processed();
+        const U32 droppedBefore = load.dropped();
+        Session::run(segment.ticks);
+        point.loadRuns = load.processed() - processedBefore;
+        point.loadDropped = load.dropped() - droppedBefore;
+        bool broke[RATE_GROUP_COUNT] = {};
+        Report::sweepPoint(point, broke);
+        Session::nextSegment();
+        timing.segmentDone();
+    }
     return true;
 }
 

@@ -61,27 +61,6 @@ Uplink::Frame idleCommand(const Axis& axis) {
     return loadCommand(axis, 0);
 }
 
-// One measured point: a SWEEP line per rate group; broke[i] tells whether
-// group i missed a deadline
-void printPoint(const Axis& axis, U32 point, U32 us, U32 processed, U32 dropped, bool broke[]) {
-    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
-        const RateGroupRecord& rg = timing.record(i);
-        broke[i] = rg.slips > 0 || rg.lateStarts > 0;
-        printk(
-            "KIT SWEEP axis=%s point=%u load_us=%u burst=%u rg=%s hz=%u cycles=%u expected=%u slips=%u "
-            "late_starts=%u latency_p99=%u latency_max=%u jitter_p99=%u jitter_max=%u exec_max=%u load_runs=%u "
-            "load_dropped=%u\n",
-            axis.name, static_cast<unsigned>(point), static_cast<unsigned>(us),
-            static_cast<unsigned>(axis.burst ? BURST_MESSAGES : 0), rg.spec.name,
-            static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor), static_cast<unsigned>(rg.cycles),
-            static_cast<unsigned>(expectedCycles(i, MEASURE_TICKS)), static_cast<unsigned>(rg.slips),
-            static_cast<unsigned>(rg.lateStarts), static_cast<unsigned>(rg.latency.percentile(990)),
-            static_cast<unsigned>(rg.latency.max()), static_cast<unsigned>(rg.periodError.percentile(990)),
-            static_cast<unsigned>(rg.periodError.max()), static_cast<unsigned>(rg.exec.max()),
-            static_cast<unsigned>(processed), static_cast<unsigned>(dropped));
-    }
-}
-
 // Sweep one axis; false if a load command was not accepted
 bool sweep(const Axis& axis, U32 breakUs[]) {
     bool commanded = true;
@@ -99,7 +78,15 @@ bool sweep(const Axis& axis, U32 breakUs[]) {
         const U32 droppedBefore = load.dropped();
         Session::run(MEASURE_TICKS);
         bool broke[RATE_GROUP_COUNT] = {};
-        printPoint(axis, point, us, load.processed() - processedBefore, load.dropped() - droppedBefore, broke);
+        const Report::SweepPoint measured = {axis.name,
+                                             point,
+                                             us,
+                                             "us",
+                                             axis.burst ? BURST_MESSAGES : 0,
+                                             MEASURE_TICKS,
+                                             load.processed() - processedBefore,
+                                             load.dropped() - droppedBefore};
+        Report::sweepPoint(measured, broke);
         for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
             if (broke[i] && breakUs[i] == NO_BREAK) {
                 breakUs[i] = us;
@@ -118,9 +105,9 @@ bool sweep(const Axis& axis, U32 breakUs[]) {
 void printBreaks(const Axis& axis, const U32 breakUs[]) {
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         if (breakUs[i] == NO_BREAK) {
-            printk("KIT BREAK axis=%s rg=%s load_us=none\n", axis.name, timing.record(i).spec.name);
+            printk("KIT BREAK axis=%s rg=%s level=none unit=us\n", axis.name, timing.record(i).spec.name);
         } else {
-            printk("KIT BREAK axis=%s rg=%s load_us=%u\n", axis.name, timing.record(i).spec.name,
+            printk("KIT BREAK axis=%s rg=%s level=%u unit=us\n", axis.name, timing.record(i).spec.name,
                    static_cast<unsigned>(breakUs[i]));
         }
     }

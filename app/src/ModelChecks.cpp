@@ -40,6 +40,12 @@ static_assert(TABLE_ENTRIES == ACTIVE_INSTANCE_COUNT,
               "the stack table (boards/<board>/Tables.fpp) and ACTIVE_INSTANCES (app/Top) must list the same "
               "active instances");
 
+// The dispatcher's queue asserts when full: the ground's commands in flight,
+// its 10 Hz telemetry call and a scripted command must all fit
+static_assert(Link::commandsInFlight + 2 <= Queues::cmdDisp,
+              "Queues.cmdDisp (app/Top/instances.fpp) cannot hold Link.commandsInFlight ground commands, the "
+              "dispatcher's 10 Hz call and a scripted command");
+
 #if defined(CONFIG_KIT_MODEL_RTOS)
 // fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
 static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,

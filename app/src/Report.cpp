@@ -81,6 +81,25 @@ void printStats(const char* name, const CycleStats& stats) {
 
 }  // namespace
 
+void sweepPoint(const SweepPoint& point, bool broke[]) {
+    for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
+        const RateGroupRecord& rg = timing.record(i);
+        broke[i] = rg.slips > 0 || rg.lateStarts > 0;
+        printk(
+            "KIT SWEEP axis=%s point=%u level=%u unit=%s burst=%u rg=%s hz=%u cycles=%u expected=%u slips=%u "
+            "late_starts=%u latency_p99=%u latency_max=%u jitter_p99=%u jitter_max=%u exec_max=%u load_runs=%u "
+            "load_dropped=%u\n",
+            point.axis, static_cast<unsigned>(point.point), static_cast<unsigned>(point.level), point.unit,
+            static_cast<unsigned>(point.burst), rg.spec.name,
+            static_cast<unsigned>(CONFIG_KIT_TICK_HZ / rg.spec.divisor), static_cast<unsigned>(rg.cycles),
+            static_cast<unsigned>(expectedCycles(i, point.ticks)), static_cast<unsigned>(rg.slips),
+            static_cast<unsigned>(rg.lateStarts), static_cast<unsigned>(rg.latency.percentile(990)),
+            static_cast<unsigned>(rg.latency.max()), static_cast<unsigned>(rg.periodError.percentile(990)),
+            static_cast<unsigned>(rg.periodError.max()), static_cast<unsigned>(rg.exec.max()),
+            static_cast<unsigned>(point.loadRuns), static_cast<unsigned>(point.loadDropped));
+    }
+}
+
 bool rateGroups(U32 ticks) {
     bool passed = true;
     const U64 runCycles = static_cast<U64>(ticks) * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);

@@ -41,6 +41,21 @@ bool results(U32 ticks, U32 probeCost, const CountingAllocator& allocator);
 //! A CMD line per uplinked frame; true when each was answered as expected
 bool commands(const Uplink::Frame* frames, FwSizeType count);
 
+//! One point of a sweep: the axis, its setting in its unit, the segment's
+//! length and the background load's work in it
+struct SweepPoint {
+    const char* axis;
+    U32 point;         //!< index along the axis
+    U32 level;         //!< the axis' setting
+    const char* unit;  //!< of the level: "us", "cmd/s", "pkt/s"
+    U32 burst;         //!< messages per load burst (the burst axis), else 0
+    U32 ticks;         //!< the measured segment
+    U32 loadRuns;
+    U32 loadDropped;
+};
+//! A SWEEP line per rate group over the segment just measured; broke[i]
+//! tells whether group i missed a deadline in it
+void sweepPoint(const SweepPoint& point, bool broke[]);
 //! DOWNLINK and TICKS lines; true when every packet was decoded and counted
 bool downlinkAndTicks();
 

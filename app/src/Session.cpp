@@ -11,6 +11,8 @@
 #include "app/src/TickControl.hpp"
 #include "app/src/Variant.hpp"
 
+#include <Fw/Types/Assert.hpp>
+
 #include <zephyr/fatal_types.h>
 
 namespace Kit {
@@ -45,25 +47,43 @@ U32 hyperperiod() {
     return lcm;
 }
 
-void run(U32 ticks) {
+namespace {
+
+// The main loop: `ticks` ticks (0: no limit), or, when `until` is given,
+// until it holds at the end of a hyperperiod
+void loop(U32 ticks, bool (*until)()) {
     const U32 periodUs = 1000000u / CONFIG_KIT_TICK_HZ;
+    const U32 period = hyperperiod();
     U32 handled = 0;
+    bool stop = false;
     TickControl::start(periodUs);
-    // A run of 0 ticks never ends (flight-like); otherwise the loop is
-    // bounded by the tick count.
-    while (ticks == 0 || handled < ticks) {
+    // A run of 0 ticks never ends by count (flight-like); otherwise the loop
+    // is bounded by the tick count.
+    while (!stop && (ticks == 0 || handled < ticks)) {
         Variant::waitForTick(TickClock::ticksFired, handled);
         const U32 fired = TickClock::ticksFired();
         // Hand over every tick that fired, in order: a main loop that fell
         // behind shows up as latency and slips, never as lost cycles.
-        while (handled != fired && (ticks == 0 || handled < ticks)) {
+        while (!stop && handled != fired && (ticks == 0 || handled < ticks)) {
             timing.tick();
             handled++;
             haltOnBreach(Variant::afterTick());
+            stop = until != nullptr && (handled % period) == 0 && until();
         }
     }
     TickControl::stop();
     haltOnBreach(Variant::drain());
+}
+
+}  // namespace
+
+void run(U32 ticks) {
+    loop(ticks, nullptr);
+}
+
+void serve(bool (*until)()) {
+    FW_ASSERT(until != nullptr);
+    loop(0, until);
 }
 
 void nextSegment() {

@@ -22,6 +22,12 @@ U32 hyperperiod();
 //! finish. The timing records then hold this segment (see nextSegment()).
 void run(U32 ticks);
 
+//! Run the tick, as run(0) does, until `until()` holds at the end of a
+//! hyperperiod (it is asked once per hyperperiod, from the main loop); then
+//! stop the tick and let queued work finish, as run() does. The ground
+//! scenario serves the link this way between the segments it measures.
+void serve(bool (*until)());
+
 //! Empty the timing records for the next segment (see Timing::restart)
 void nextSegment();
 

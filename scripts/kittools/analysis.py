@@ -78,13 +78,16 @@ def fastest_period_us(data: Results) -> float:
     return 1e6 / tick_hz if tick_hz > 0 else 0.0
 
 
-def break_text(value: int | None, max_us: int) -> str:
-    return f"{value} µs" if value is not None else f"none up to {max_us} µs"
+def break_text(value: int | None, most: int, unit: str) -> str:
+    """A breaking point, or how far the axis went without one."""
+    if value is not None:
+        return sweep.level_text(value, unit)
+    return f"none up to {sweep.level_text(most, unit)}"
 
 
 def knee(p99_us: list[float], series: list[sweep.Point]) -> int | None:
     """The first load at which the p99 is KNEE_FACTOR over its zero-load value."""
-    return next((p.load_us for q, p in zip(p99_us, series, strict=True) if q > p99_us[0] * KNEE_FACTOR), None)
+    return next((p.level for q, p in zip(p99_us, series, strict=True) if q > p99_us[0] * KNEE_FACTOR), None)
 
 
 def switches_per_second(data: Results, variant: str) -> float | None:
@@ -108,22 +111,28 @@ def sweep_guidance(data: Results, found: dict[str, sweep.Sweep]) -> Text:
         sw = found[v]
         fastest = sw.rate_groups()[0]
         for axis in sw.axes():
+            unit = sw.unit(axis)
+            # A load in µs of computation compares with the fastest period; a
+            # traffic rate does not
+            timed = unit == "us" and period > 0
             breaks = [(at_us, rg) for rg in sw.rate_groups() if (at_us := sw.breaking_point(axis, rg)) is not None]
             series = sw.series(axis, fastest)
             p99 = [p.latency_p99 * 1e6 / cycles_hz for p in series]
             at = knee(p99, series)
-            grows = f"; its p99 latency starts to grow at {at} µs" if at is not None else ""
+            grows = f"; its p99 latency starts to grow at {sweep.level_text(at, unit)}" if at is not None else ""
             if breaks:
                 load, rg = min(breaks)
-                before = [q for q, p in zip(p99, series, strict=True) if p.load_us < load]
+                before = [q for q, p in zip(p99, series, strict=True) if p.level < load]
                 grow = (f", from {before[0]:.1f} µs to {before[-1]:.1f} µs just below the break"
                         if before and at is not None else "")
-                share = f" ({load / period * 100:.0f}% of the {period:.0f} µs period)" if period else ""
-                lines.append(f"{v}, {axis} load: {rg} misses deadlines from {load} µs{share}{grows}{grow}.")
+                share = f" ({load / period * 100:.0f}% of the {period:.0f} µs period)" if timed else ""
+                lines.append(f"{v}, {axis} load: {rg} misses deadlines from {sweep.level_text(load, unit)}"
+                             f"{share}{grows}{grow}.")
             else:
                 most = sw.max_load(axis)
-                times = f" ({most / period:.1f}x the fastest period)" if period else ""
-                lines.append(f"{v}, {axis} load: no rate group missed a deadline up to {most} µs{times}; "
+                times = f" ({most / period:.1f}x the fastest period)" if timed else ""
+                lines.append(f"{v}, {axis} load: no rate group missed a deadline up to "
+                             f"{sweep.level_text(most, unit)}{times}; "
                              f"{fastest} p99 latency stayed within {min(p99):.1f}-{max(p99):.1f} µs{grows}.")
         lines += [f"{v}: inconsistent sweep record: {text}" for text in sw.inconsistencies()]
     names = data.names()

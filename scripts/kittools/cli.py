@@ -91,12 +91,13 @@ def cmd_test(args: argparse.Namespace) -> int:
     if not args.skip_twister:
         steps.append((f"twister suite under QEMU ({', '.join(boards)})", lambda: testing.run_twister(boards, log_dir)))
         steps.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
+        # Before the budget: the board's report takes the serial-load sweep from it
+        steps.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
+                      lambda: testing.run_integration(log_dir)))
         for board in boards:
             steps.append((f"budget: {board} results against its baseline",
                           functools.partial(testing.check_budget, board, log_dir, _budget(args),
                                             args.update_baseline)))
-        steps.append(("ground link: integration suite through fprime-gds",
-                      lambda: testing.run_integration(log_dir)))
     if not args.skip_host:
         steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:

@@ -22,26 +22,25 @@ from __future__ import annotations
 import functools
 import json
 import random
-import socket
-import struct
-import time
-import zlib
 from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .link_client import (
+    DESCRIPTOR,
+    FW_PACKET_LOG,
+    FW_PACKET_TELEM,
+    HEADER,
+    START_WORD,
+    TRAILER,
+    Downlink,
+    command,
+    frame,
+)
 from .workspace import KitError
 
-START_WORD = 0xDEADBEEF
-HEADER = struct.Struct(">II")  # start word, length (F´'s FprimeProtocol.FrameHeader)
-TRAILER = struct.Struct(">I")  # CRC-32 of header and payload
-DESCRIPTOR = struct.Struct(">H")  # FwPacketDescriptorType
-OPCODE = struct.Struct(">I")  # FwOpcodeType
-FW_PACKET_COMMAND = 0
-FW_PACKET_TELEM = 1
-FW_PACKET_LOG = 2
 # Closes every batch: a frame still waiting for its claimed length (a
 # truncated one) is completed by these and rejected, never left pending
 PADDING = bytes(80)
@@ -54,15 +53,6 @@ INVALID_KINDS = ("garbage", "bad_checksum", "truncated", "oversized", "length_wr
                  "bad_opcode", "bad_arguments")
 # Valid frames (good start word, length and checksum) with a bad payload
 FRAMED_KINDS = ("unknown_packet", "bad_opcode", "bad_arguments")
-
-
-def frame(payload: bytes) -> bytes:
-    header = HEADER.pack(START_WORD, len(payload))
-    return header + payload + TRAILER.pack(zlib.crc32(header + payload) & 0xFFFFFFFF)
-
-
-def command(opcode: int, arguments: bytes = b"") -> bytes:
-    return DESCRIPTOR.pack(FW_PACKET_COMMAND) + OPCODE.pack(opcode) + arguments
 
 
 @dataclass(frozen=True)
@@ -133,7 +123,8 @@ class Outcome:
     noops_answered: int = 0
     events: Counter[str] = field(default_factory=Counter)
     telemetry: dict[str, int] = field(default_factory=dict)
-    halted: bool = False
+    #: The console lines that show the deployment halted ("" while it runs)
+    halt: str = ""
     #: NO_OPs (their number in the run) not answered within REPLY_TIMEOUT_S
     missed: list[int] = field(default_factory=list)
 
@@ -153,6 +144,8 @@ class Outcome:
              self.sent["unknown_packet"]),
             ("cmdDisp.CommandErrors", self.telemetry.get("Kit.cmdDisp.CommandErrors"),
              self.sent["bad_opcode"] + self.sent["bad_arguments"]),
+            # Paced by its NO_OPs, the fuzzer never has more commands in flight than the link lets through
+            ("LinkHealth.CommandsDropped", self.telemetry.get("Kit.linkHealth.CommandsDropped"), 0),
         )
         for name, got, expected in checks:
             if got != expected:
@@ -160,8 +153,8 @@ class Outcome:
         bad = self.telemetry.get("Kit.linkHealth.BadChecksums", 0)
         if bad < self.sent["bad_checksum"]:
             found.append(f"LinkHealth.BadChecksums: {bad}, expected at least {self.sent['bad_checksum']}")
-        if self.halted:
-            found.append("the deployment asserted or halted")
+        if self.halt:
+            found.append(f"the deployment asserted or halted:\n{self.halt}")
         if self.missed:
             found.append(f"no answer within {REPLY_TIMEOUT_S:.0f} s to NO_OPs {self.missed}")
         return found
@@ -170,75 +163,8 @@ class Outcome:
         return {"seed": self.seed, "invalid_sent": self.invalid_sent, "sent": dict(sorted(self.sent.items())),
                 "noops_sent": self.noops_sent, "noops_answered": self.noops_answered,
                 "rejected": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())},
-                "events": dict(sorted(self.events.items())), "halted": self.halted, "missed": self.missed,
+                "events": dict(sorted(self.events.items())), "halt": self.halt, "missed": self.missed,
                 "failures": self.failures()}
-
-
-class Downlink:
-    """The link socket: bytes up, and the downlink decoded into events (by
-    name) and the latest value of every telemetry channel."""
-
-    def __init__(self, socket_path: Path, dictionary: Path) -> None:
-        from fprime_gds.common.communication.framing import FpFramerDeframer
-        from fprime_gds.common.decoders.ch_decoder import ChDecoder
-        from fprime_gds.common.decoders.event_decoder import EventDecoder
-        from fprime_gds.common.models.dictionaries import Dictionaries
-
-        dictionaries = Dictionaries()
-        dictionaries.load_dictionaries(str(dictionary), None, None)
-        self._events = EventDecoder(dictionaries.event_id)
-        self._channels = ChDecoder(dictionaries.channel_id)
-        FpFramerDeframer.set_constants()
-        self._deframer = FpFramerDeframer()
-        self._pending = b""
-        self.events: Counter[str] = Counter()
-        self.telemetry: dict[str, int] = {}
-        # The deployment's time (F´ time tags, s) of the newest sample of each
-        # channel and the newest event of each name
-        self.telemetry_time: dict[str, float] = {}
-        self.event_time: dict[str, float] = {}
-        self._socket = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-        try:
-            self._socket.connect(str(socket_path))
-        except OSError as error:
-            raise KitError(f"cannot connect to the link {socket_path}: {error} (is QEMU running it?)") from None
-
-    def close(self) -> None:
-        self._socket.close()
-
-    def send(self, data: bytes) -> None:
-        self._socket.sendall(data)
-
-    def pump(self, until: Callable[[], bool], timeout_s: float) -> bool:
-        """Read and decode the downlink until `until()` holds or the time-out."""
-        deadline = time.monotonic() + timeout_s
-        while not until():
-            remaining = deadline - time.monotonic()
-            if remaining <= 0:
-                return False
-            self._socket.settimeout(min(remaining, 0.5))
-            try:
-                chunk = self._socket.recv(65536)
-            except TimeoutError:
-                continue
-            if not chunk:
-                raise KitError("the link closed: QEMU stopped")
-            self._decode(chunk)
-        return True
-
-    def _decode(self, chunk: bytes) -> None:
-        packets, self._pending, _ = self._deframer.deframe_all(self._pending + chunk, no_copy=False)
-        for packet in packets:
-            (descriptor,) = DESCRIPTOR.unpack_from(packet)
-            body = packet[DESCRIPTOR.size:]
-            if descriptor == FW_PACKET_LOG:
-                for event in self._events.decode_api(body):
-                    self.events[event.template.get_full_name()] += 1
-                    self.event_time[event.template.get_full_name()] = event.get_time().get_float()
-            elif descriptor == FW_PACKET_TELEM:
-                for sample in self._channels.decode_api(body):
-                    self.telemetry[sample.template.get_full_name()] = sample.get_val()
-                    self.telemetry_time[sample.template.get_full_name()] = sample.get_time().get_float()
 
 
 NOOP_EVENT = "Kit.cmdDisp.NoOpReceived"
@@ -251,8 +177,8 @@ HEARTBEAT_CHANNEL = "Kit.linkHealth.FramesDetected"
 SETTLE_S = 0.3
 # Telemetry read at the end
 COUNT_CHANNELS = ("Kit.linkHealth.FramesDetected", "Kit.linkHealth.BadChecksums", "Kit.linkHealth.BytesDiscarded",
-                  "Kit.linkHealth.Oversized", "Kit.linkHealth.UnknownPackets", "Kit.cmdDisp.CommandErrors",
-                  "Kit.cmdDisp.CommandsDispatched")
+                  "Kit.linkHealth.Oversized", "Kit.linkHealth.UnknownPackets", "Kit.linkHealth.CommandsDropped",
+                  "Kit.cmdDisp.CommandErrors", "Kit.cmdDisp.CommandsDispatched")
 
 
 def answered(link: Downlink, noops: int) -> bool:
@@ -260,17 +186,18 @@ def answered(link: Downlink, noops: int) -> bool:
 
 
 def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per_batch: int = 4,
-        halted: Callable[[], bool] = lambda: False) -> Outcome:
+        halted: Callable[[], str] = lambda: "") -> Outcome:
     """Send `invalid_frames` invalid frames in batches of `per_batch`, each
     batch closed by a NO_OP, and return what the deployment answered.
-    `halted` is asked after every batch (it also drains the console)."""
+    `halted` is asked after every batch (it also drains the console): the
+    console lines that show a halt, or ""."""
     deployment = Deployment.from_dictionary(dictionary)
     rng = random.Random(seed)
     outcome = Outcome(seed)
     noop = frame(command(deployment.noop))
     link = Downlink(socket_path, dictionary)
     try:
-        while outcome.invalid_sent < invalid_frames and not outcome.halted:
+        while outcome.invalid_sent < invalid_frames and not outcome.halt:
             batch = b""
             for _ in range(min(per_batch, invalid_frames - outcome.invalid_sent)):
                 kind = rng.choice(INVALID_KINDS)
@@ -279,7 +206,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
             link.send(batch + noop + PADDING)
             outcome.noops_sent += 1
             replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
-            outcome.halted = halted()
+            outcome.halt = halted()
             if not replied:
                 # A missed answer fails the run (Outcome.failures); go on,
                 # since the next batch's bytes may free what holds it up,
@@ -287,7 +214,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
                 outcome.missed.append(outcome.noops_sent)
                 if len(outcome.missed) >= MISSED_ANSWERS_MAX:
                     break
-        if outcome.halted:
+        if outcome.halt:
             outcome.noops_answered = link.events[NOOP_EVENT]
             outcome.events = link.events
             return outcome

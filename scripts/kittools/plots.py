@@ -84,30 +84,31 @@ def histogram_chart(data: Results, rate_group: str) -> Image | None:
 def sweep_chart(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> Image:
     names = sorted(found)
     rate_groups = found[names[0]].rate_groups()
+    unit = found[names[0]].unit(axis)
 
     def draw(figure: Any) -> None:
         for index, rg in enumerate(rate_groups):
             axes = figure.add_subplot(1, len(rate_groups), index + 1)
             for v in names:
                 points = found[v].series(axis, rg)
-                x = [p.load_us for p in points]
+                x = [p.level for p in points]
                 (line,) = axes.plot(x, [p.latency_p99 * 1e6 / cycles_hz for p in points], "-o", markersize=3,
                                     label=f"{v} p99")
                 axes.plot(x, [p.latency_max * 1e6 / cycles_hz for p in points], "--", color=line.get_color(),
                           label=f"{v} max")
                 missed = [p for p in points if p.missed]
                 if missed:
-                    axes.plot([p.load_us for p in missed], [p.latency_max * 1e6 / cycles_hz for p in missed], "x",
+                    axes.plot([p.level for p in missed], [p.latency_max * 1e6 / cycles_hz for p in missed], "x",
                               color="red", markersize=7, label=f"{v} missed deadline")
                 broke = found[v].breaking_point(axis, rg)
                 if broke is not None:
                     axes.axvline(broke, linestyle=":", color=line.get_color())
             axes.set_title(f"{rg}: dispatch latency vs load ({axis})", fontsize=9)
-            axes.set_xlabel("load (µs)", fontsize=8)
+            axes.set_xlabel(f"load ({'µs' if unit == 'us' else unit})", fontsize=8)
             axes.set_ylabel("latency (µs)", fontsize=8)
             axes.legend(fontsize=7)
 
-    return Image(f"Latency versus background load, axis '{axis}'", _png(draw, (4.2 * len(rate_groups), 3.4)))
+    return Image(f"Latency versus load, axis '{axis}'", _png(draw, (4.2 * len(rate_groups), 3.4)))
 
 
 def boards_chart(datas: list[Results]) -> Image:

@@ -75,7 +75,7 @@ def to_csv(datas: list[Results]) -> str:
                 writer.writerow([name, metric.label, value, metric.key])
             sw = found.get(v)
             for point in sw.points if sw else []:
-                writer.writerow([name, f"sweep {point.axis} {point.rate_group} load {point.load_us} us "
+                writer.writerow([name, f"sweep {point.axis} {point.rate_group} load {point.level} {point.unit} "
                                        "latency p99 (cycles)", point.latency_p99,
-                                 f"sweep.{point.axis}.{point.rate_group}.{point.load_us}.p99_cycles"])
+                                 f"sweep.{point.axis}.{point.rate_group}.{point.level}.p99_cycles"])
     return stream.getvalue()

@@ -33,7 +33,8 @@ def sweep_sections(data: Results) -> list[Section]:
     sections: list[Section] = [tables.breaking_points_table(found), analysis.sweep_guidance(data, found)]
     for axis in found[sorted(found)[0]].axes():
         sections += [plots.sweep_chart(found, cycles_hz, axis), tables.sweep_table(found, cycles_hz, axis)]
-    return sections
+    link = tables.serial_link_table(data)
+    return sections + ([link] if link is not None else [])
 
 
 def build_sections(data: Results, baseline: Results | None, limits: Budget) -> tuple[list[Section], list[str]]:

@@ -10,7 +10,7 @@ import json
 from pathlib import Path
 from typing import Any
 
-from . import compare, conditions, console, model, modules
+from . import compare, conditions, console, model, modules, serial_sweep
 from .footprint import measure
 from .workspace import KitError
 
@@ -90,11 +90,21 @@ def _recorded(suite: dict[str, Any]) -> console.Run:
     return run
 
 
-def from_twister(twister_out: Path, board: str) -> model.Results:
+def integration_logs(log_dir: Path, platform: str, build_name: str) -> Path:
+    """Where `kit test` keeps what it ran on a twister build of the ground
+    scenario (integration suite, fuzzing, serial-load sweep)."""
+    return log_dir / f"integration.{platform.replace('/', '_')}_{build_name}"
+
+
+SERIAL_SWEEP_FILE = "serial.json"
+
+
+def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> model.Results:
     """Results of a twister run of tests/deployment on one board, in the
     results-file schema: the nominal scenario's records (kit.deployment.*),
     footprint and modules from its build, plus the sweep records of the load
-    scenario (kit.load.*) of the same variant when it ran."""
+    scenario (kit.load.*) of the same variant when it ran, and those of the
+    serial-load sweep `kit test` ran on its ground build (under `log_dir`)."""
     report = twister_out / "twister.json"
     if not report.is_file():
         raise KitError(f"no twister report at {report}")
@@ -111,6 +121,10 @@ def from_twister(twister_out: Path, board: str) -> model.Results:
         sweep = sweeps.get(run.variant)
         if sweep is not None:
             run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
+        serial = integration_logs(log_dir, suite["platform"], f"kit.ground.{run.variant}") / SERIAL_SWEEP_FILE \
+            if log_dir is not None else None
+        if serial is not None and serial.is_file():
+            run.records += serial_sweep.records_of(serial)
         build = twister_build(twister_out, suite["platform"], scenario)
         found.append(compare.VariantData(run.variant, measure(build), run,
                                          modules.breakdown(modules.report(build, "rom")),

@@ -65,6 +65,21 @@ def ends_run(line: str) -> bool:
     return line.startswith(("KIT END", "KIT HALT")) or HALT_MARKER in line
 
 
+# What a deployment that must never stop prints when it does: an F´ assert,
+# Zephyr's or the kit's fatal report, or an end line
+def _shows_halt(line: str) -> bool:
+    return ends_run(line) or "Assert" in line or "FATAL" in line
+
+
+def halt_lines(lines: list[str], most: int = 12) -> str:
+    """The console from its first sign of a halt (at most `most` lines), or
+    "" while the deployment runs."""
+    for index, line in enumerate(lines):
+        if _shows_halt(line):
+            return "\n".join(lines[index:index + most])
+    return ""
+
+
 class Qemu:
     """The build's `run` target (QEMU) in the background, its console read
     line by line from the build's QEMU pipe (a twister build) or from stdio.

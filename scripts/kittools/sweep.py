@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: Apache-2.0
-"""The background-load sweep of a variant, from its SWEEP and BREAK records
-(app/scenarios/load.cpp prints them; docs/results.md describes them)."""
+"""The load sweeps of a variant, from its SWEEP and BREAK records: the
+background-load axes (app/scenarios/load.cpp) and the serial-load axes
+(app/scenarios/ground.cpp, driven by kittools.serial_sweep). Each axis has
+its unit (`us` of computation, `cmd/s` up the link, `pkt/s` down it);
+docs/results.md describes the records."""
 
 from __future__ import annotations
 
@@ -13,7 +16,8 @@ class Point:
     """One rate group at one load, over one measured segment (counter cycles)."""
 
     axis: str
-    load_us: int
+    level: int  # the axis' setting, in `unit`
+    unit: str
     burst: int
     rate_group: str
     hz: int
@@ -43,17 +47,20 @@ class Sweep:
 
     def series(self, axis: str, rate_group: str) -> list[Point]:
         return sorted((p for p in self.points if p.axis == axis and p.rate_group == rate_group),
-                      key=lambda p: p.load_us)
+                      key=lambda p: p.level)
+
+    def unit(self, axis: str) -> str:
+        return next((p.unit for p in self.points if p.axis == axis), "")
 
     def breaking_point(self, axis: str, rate_group: str) -> int | None:
         """The smallest load at which the group missed a deadline, from the points."""
         for point in self.series(axis, rate_group):
             if point.missed:
-                return point.load_us
+                return point.level
         return None
 
     def max_load(self, axis: str) -> int:
-        return max((p.load_us for p in self.points if p.axis == axis), default=0)
+        return max((p.level for p in self.points if p.axis == axis), default=0)
 
     def inconsistencies(self) -> list[str]:
         """Where the firmware's BREAK line and its SWEEP points disagree."""
@@ -61,12 +68,17 @@ class Sweep:
         for (axis, rg), reported in sorted(self.reported.items()):
             computed = self.breaking_point(axis, rg)
             if computed != reported:
-                found.append(f"{axis} {rg}: BREAK says {_us(reported)}, the points say {_us(computed)}")
+                unit = self.unit(axis)
+                found.append(f"{axis} {rg}: BREAK says {level_text(reported, unit)}, "
+                             f"the points say {level_text(computed, unit)}")
         return found
 
 
-def _us(value: int | None) -> str:
-    return "none" if value is None else f"{value} µs"
+def level_text(value: int | None, unit: str) -> str:
+    """A level in its unit, as a reader writes it."""
+    if value is None:
+        return "none"
+    return f"{value} µs" if unit == "us" else f"{value} {unit}"
 
 
 def _int(record: dict[str, Any], key: str) -> int:
@@ -75,7 +87,7 @@ def _int(record: dict[str, Any], key: str) -> int:
 
 def of_records(records: list[dict[str, Any]]) -> Sweep | None:
     """The sweep in a variant's records, or None when it has none."""
-    points = [Point(str(r["axis"]), _int(r, "load_us"), _int(r, "burst"), str(r["rg"]), _int(r, "hz"),
+    points = [Point(str(r["axis"]), _int(r, "level"), str(r["unit"]), _int(r, "burst"), str(r["rg"]), _int(r, "hz"),
                     _int(r, "slips"), _int(r, "late_starts"), _int(r, "latency_p99"), _int(r, "latency_max"),
                     _int(r, "jitter_max"))
               for r in records if r.get("kind") == "SWEEP"]
@@ -84,6 +96,6 @@ def of_records(records: list[dict[str, Any]]) -> Sweep | None:
     reported: dict[tuple[str, str], int | None] = {}
     for r in records:
         if r.get("kind") == "BREAK":
-            value = str(r["load_us"])
+            value = str(r["level"])
             reported[(str(r["axis"]), str(r["rg"]))] = None if value == "none" else int(value)
     return Sweep(points, reported)

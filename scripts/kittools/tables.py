@@ -96,30 +96,54 @@ def breaking_points_table(found: dict[str, sweep.Sweep]) -> Table:
     rows = []
     for axis in first.axes():
         for rg in first.rate_groups():
-            rows.append([axis, rg] + [break_text(found[v].breaking_point(axis, rg), found[v].max_load(axis))
-                                      for v in names])
-    return Table("Background load: breaking points (smallest load at which a rate group missed a deadline)",
+            rows.append([axis, rg] + [break_text(found[v].breaking_point(axis, rg), found[v].max_load(axis),
+                                                 found[v].unit(axis)) for v in names])
+    return Table("Load sweeps: breaking points (smallest load at which a rate group missed a deadline)",
                  ["load axis", "rate group"] + names, rows)
 
 
 def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> Table:
     names = sorted(found)
     fastest = found[names[0]].rate_groups()[0]
-    loads = sorted({p.load_us for v in names for p in found[v].points if p.axis == axis})
+    loads = sorted({p.level for v in names for p in found[v].points if p.axis == axis})
     rows = []
     for load in loads:
         row: list[Any] = [load]
         for v in names:
-            at = {p.rate_group: p for p in found[v].points if p.axis == axis and p.load_us == load}
+            at = {p.rate_group: p for p in found[v].points if p.axis == axis and p.level == load}
             point = at.get(fastest)
             row += [point.latency_p99 * 1e6 / cycles_hz if point else "",
                     point.latency_max * 1e6 / cycles_hz if point else "",
                     ", ".join(rg for rg, p in at.items() if p.missed) or "-"]
         rows.append(row)
-    columns = ["load (µs)"]
+    unit = found[names[0]].unit(axis)
+    columns = [f"load ({'µs' if unit == 'us' else unit})"]
     for v in names:
         columns += [f"{v} {fastest} p99 (µs)", f"{v} {fastest} max (µs)", f"{v} missed deadlines"]
-    return Table(f"Background load sweep, axis '{axis}'", columns, rows)
+    return Table(f"Load sweep, axis '{axis}'", columns, rows)
+
+
+def serial_link_table(data: Results) -> Table | None:
+    """The serial-load sweep's traffic: what each level offered the link and
+    what got through, per variant (SERIAL records, kittools.serial_sweep)."""
+    names = data.names()
+    found = {v: {(r["axis"], int(r["level"])): r for r in data.variants[v].of_kind("SERIAL")} for v in names}
+    keys = sorted({k for v in names for k in found[v]}, key=lambda k: (k[0] != "uplink", k[1]))
+    if not keys:
+        return None
+    rows: list[list[Any]] = []
+    for axis, level in keys:
+        row: list[Any] = [axis, level]
+        for v in names:
+            record = found[v].get((axis, level))
+            row += [f"{record['delivered']} of {record['offered']}" if record else "",
+                    record["lost"] if record else ""]
+        rows.append(row)
+    columns = ["axis", "level (cmd/s, pkt/s)"]
+    for v in names:
+        columns += [f"{v} delivered", f"{v} lost"]
+    return Table("Serial load: what the link delivered (uplink: commands the link passed to the dispatcher; "
+                 "downlink: packets the ground received, by their numbers)", columns, rows)
 
 
 def boards_table(datas: list[Results]) -> Table:
@@ -138,5 +162,6 @@ def boards_table(datas: list[Results]) -> Table:
     for axis in axes:
         for rg in next(sw for sw in found if sw).rate_groups():
             rows.append([f"breaking point, {axis} load, {rg}"] +
-                        [break_text(sw.breaking_point(axis, rg), sw.max_load(axis)) if sw else "" for sw in found])
+                        [break_text(sw.breaking_point(axis, rg), sw.max_load(axis), sw.unit(axis)) if sw else ""
+                         for sw in found])
     return Table("Boards side by side", ["metric"] + [f"{d.board} {v}" for d, v in columns], rows)

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, fuzz, ground, results, runner
+from . import budget, console, fuzz, ground, results, runner, serial_sweep, sweep
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
@@ -206,8 +206,9 @@ def run_integration(log_dir: Path) -> Tally:
         raise KitError(f"twister built no ground scenario (kit.ground.*) under {TWISTER_OUT}")
     tally = Tally()
     for build in builds:
-        name = "_".join(build.relative_to(TWISTER_OUT).parts[:1] + (build.name,))
-        logs = log_dir / f"integration.{name}"
+        platform = build.relative_to(TWISTER_OUT).parts[0]
+        name = f"{platform}_{build.name}"
+        logs = results.integration_logs(log_dir, platform, build.name)
         xml = logs / "pytest.xml"
         started = time.monotonic()
         with ground.GroundStation(build, logs) as station:
@@ -223,7 +224,27 @@ def run_integration(log_dir: Path) -> Tally:
               f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
         tally.add(result)
         tally.add(fuzz_build(build, name, logs))
+        tally.add(serial_sweep_build(build, name, logs))
     return tally
+
+
+def serial_sweep_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and run the serial-load sweep on its link
+    (kittools.serial_sweep); the records go to serial.json beside the other
+    logs, where the board's results (results.from_twister) take them."""
+    started = time.monotonic()
+    try:
+        outcome = serial_sweep.run(build)
+    except KitError as error:
+        print(f"[kit]   {name}: serial-load sweep: FAIL: {error}", flush=True)
+        return Tally(failed=1)
+    (logs / results.SERIAL_SWEEP_FILE).write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
+    found = outcome.sweep()
+    breaks = {f"{axis} {rg}": sweep.level_text(found.breaking_point(axis, rg), found.unit(axis))
+              for axis in found.axes() for rg in found.rate_groups()} if found else {}
+    print(f"[kit]   {name}: serial-load sweep, {len(outcome.lines)} points x rate groups, breaking points "
+          f"{breaks} ({time.monotonic() - started:.0f} s)", flush=True)
+    return Tally(passed=1)
 
 
 # Uplink fuzzing: a fixed seed, so two runs send the same bytes and must
@@ -244,9 +265,9 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
         if not qemu.read_until(lambda line: line.startswith(ground.LINK_READY), ground.BOOT_TIMEOUT_S):
             raise KitError(f"{build} did not bring its link up:\n{qemu.text()}")
 
-        def halted() -> bool:
+        def halted() -> str:
             qemu.read_until(lambda line: False, 0.001)
-            return any(runner.ends_run(line) or "Assert" in line for line in qemu.lines)
+            return runner.halt_lines(qemu.lines)
 
         reference = link.board.split("/")[0] == REFERENCE_BOARD
         frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
@@ -280,7 +301,7 @@ def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseli
     Writes <log_dir>/<board folder>/results.json, then its report."""
     folder = check_board(board)
     baseline_path = BASELINES / f"{folder}.json"
-    data = results.from_twister(TWISTER_OUT, board)
+    data = results.from_twister(TWISTER_OUT, board, log_dir)
     out_dir = log_dir / folder
     out_dir.mkdir(parents=True, exist_ok=True)
     current = out_dir / "results.json"

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from fprime_gds.common.communication.framing import FpFramerDeframer
 
-from kittools import fuzz, ground
+from kittools import fuzz, ground, link_client, runner
 from kittools.gds_adapter import UnixSocketAdapter
 from kittools.workspace import KitError
 
@@ -22,8 +22,8 @@ DEPLOYMENT = fuzz.Deployment(noop=0x500, setpoint=0x1100, opcodes=frozenset({0x5
 
 def test_fuzzer_frames_are_what_fprime_gds_deframes():
     FpFramerDeframer.set_constants()
-    payload = fuzz.command(0x500)
-    packets, rest, _ = FpFramerDeframer().deframe_all(fuzz.frame(payload), no_copy=False)
+    payload = link_client.command(0x500)
+    packets, rest, _ = FpFramerDeframer().deframe_all(link_client.frame(payload), no_copy=False)
     assert packets == [payload] and rest == b""
 
 
@@ -44,7 +44,7 @@ def test_invalid_frames_are_invalid_and_seeded():
             if kind == "garbage":
                 assert not set(data) & fuzz.START_WORD_BYTES
             if kind in ("oversized", "length_wraps"):
-                (length,) = fuzz.HEADER.unpack_from(data)[1:]
+                (length,) = link_client.HEADER.unpack_from(data)[1:]
                 assert length + 12 > DEPLOYMENT.accumulator_size
 
 
@@ -58,13 +58,15 @@ def test_bad_payloads_are_well_framed():
 
 
 def test_outcome_names_every_shortfall():
-    outcome = fuzz.Outcome(seed=1, noops_sent=2, noops_answered=1, halted=True)
+    outcome = fuzz.Outcome(seed=1, noops_sent=2, noops_answered=1,
+                           halt="ASSERT: FrameAccumulator.cpp:123")
     outcome.sent["oversized"] = 1
     outcome.telemetry = {"Kit.linkHealth.FramesDetected": 2, "Kit.linkHealth.Oversized": 1,
-                         "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 0}
+                         "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 0,
+                         "Kit.linkHealth.CommandsDropped": 0}
     failures = outcome.failures()
     assert any("NO_OPs answered: 1, expected 2" in f for f in failures)
-    assert any("asserted or halted" in f for f in failures)
+    assert any("asserted or halted" in f and "FrameAccumulator.cpp:123" in f for f in failures)
     assert len(failures) == 2
     assert outcome.to_json()["seed"] == 1
 
@@ -136,3 +138,12 @@ def test_a_build_of_another_scenario_is_not_a_ground_station(tmp_path: Path):
     (tmp_path / "zephyr" / ".config").write_text('CONFIG_KIT_SCENARIO="nominal"\n')
     with pytest.raises(KitError, match="does not play the ground scenario"):
         ground.GroundStation(tmp_path, tmp_path / "logs")
+
+
+def test_halt_lines_start_at_the_first_sign_of_a_halt():
+    running = ["*** Booting Zephyr OS ***", "KIT LINK ready uart=uart@40005000"]
+    assert runner.halt_lines(running) == ""
+    halted = [*running, "Assert: \"ComQueue.cpp:42\"", "KIT HALT reason=kernel_panic code=4",
+              "PROJECT EXECUTION FAILED"]
+    assert runner.halt_lines(halted).splitlines() == halted[2:]
+    assert runner.halt_lines([*running, "ZEPHYR FATAL ERROR 2: Stack overflow"]).endswith("Stack overflow")

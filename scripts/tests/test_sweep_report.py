@@ -20,13 +20,13 @@ def sweep_lines(variant: str, breaks_at: int | None, say_break: int | None | str
             latency_us = 60 + (load // 2 if variant == "baremetal" and rg == "rg1kHz" else 0)
             missed = breaks_at is not None and rg == "rg1kHz" and load >= breaks_at
             lines.append(
-                f"KIT SWEEP axis=slice point={point} load_us={load} burst=0 rg={rg} hz={hz} cycles=200 "
+                f"KIT SWEEP axis=slice point={point} level={load} unit=us burst=0 rg={rg} hz={hz} cycles=200 "
                 f"expected=200 slips={20 if missed else 0} late_starts=0 latency_p99={latency_us * CYCLES_PER_US} "
                 f"latency_max={(latency_us + 5) * CYCLES_PER_US} jitter_p99=12 jitter_max=24 exec_max=200 "
                 "load_runs=20 load_dropped=0")
     said = breaks_at if say_break == "same" else say_break
-    lines.append(f"KIT BREAK axis=slice rg=rg1kHz load_us={'none' if said is None else said}")
-    lines.append("KIT BREAK axis=slice rg=rg100Hz load_us=none")
+    lines.append(f"KIT BREAK axis=slice rg=rg1kHz level={'none' if said is None else said} unit=us")
+    lines.append("KIT BREAK axis=slice rg=rg100Hz level=none unit=us")
     return lines
 
 
@@ -45,7 +45,7 @@ def test_points_and_breaking_points_come_from_the_records():
     parsed = sweep.of_records(data.variants["baremetal"].records)
     assert parsed is not None
     assert parsed.axes() == ["slice"] and parsed.rate_groups() == ["rg1kHz", "rg100Hz"]
-    assert [p.load_us for p in parsed.series("slice", "rg1kHz")] == [0, 500, 1000, 1500, 2000]
+    assert [p.level for p in parsed.series("slice", "rg1kHz")] == [0, 500, 1000, 1500, 2000]
     assert parsed.breaking_point("slice", "rg1kHz") == 1000
     assert parsed.breaking_point("slice", "rg100Hz") is None
     assert parsed.inconsistencies() == []
@@ -75,7 +75,7 @@ def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
     report.write(results(), tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "| slice | rg1kHz | 1000 µs | none up to 2000 µs |" in markdown
-    assert "## Latency versus background load, axis 'slice'" in markdown
+    assert "## Latency versus load, axis 'slice'" in markdown
     assert "| 1,000 | 560 | 565 | rg1kHz | 60 | 65 | - |" in markdown
     assert "sweep slice rg1kHz load 1000 us latency p99 (cycles)" in (tmp_path / "report.csv").read_text()
     assert "http" not in (tmp_path / "report.html").read_text().split("<body", 1)[1]
@@ -83,7 +83,7 @@ def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
 
 def test_no_sweep_section_without_sweep_records(tmp_path):
     report.write(results(with_sweep=False), tmp_path)
-    assert "Background load" not in (tmp_path / "report.md").read_text()
+    assert "Load sweep" not in (tmp_path / "report.md").read_text()
 
 
 def test_several_boards_are_reported_side_by_side(tmp_path):
@@ -99,3 +99,28 @@ def test_several_boards_are_reported_side_by_side(tmp_path):
     assert "## mps2/an385: Background load: what the sweep says" in markdown
     assert (tmp_path / "report.csv").read_text().count("mps2/an385 rtos,ROM (bytes)") == 1
     assert outcome.violations == []
+
+
+def test_a_serial_axis_is_reported_in_its_own_unit(tmp_path):
+    """The ground link's axes (kittools.serial_sweep) share the records and
+    the report with the load axes, each in its unit."""
+    data = results()
+    uplink = [f"KIT SWEEP axis=uplink point={point} level={rate} unit=cmd/s burst=0 rg={rg} hz={hz} cycles=1000 "
+              f"expected=1000 slips={5 if rate >= 200 and rg == 'rg1kHz' else 0} late_starts=0 latency_p99=720 "
+              "latency_max=900 jitter_p99=12 jitter_max=24 exec_max=200 load_runs=100 load_dropped=0"
+              for point, rate in enumerate((0, 100, 200)) for rg, hz in (("rg1kHz", 1000), ("rg100Hz", 100))]
+    uplink.append("KIT SERIAL axis=uplink point=2 level=200 offered=300 delivered=290 lost=10 receive_overruns=0")
+    for variant in ("baremetal", "rtos"):
+        data.variants[variant].records += [{"kind": r.kind, **r.fields} for line in uplink
+                                           if (r := console.parse_line(line)) is not None]
+    parsed = sweep.of_records(data.variants["rtos"].records)
+    assert parsed is not None and parsed.axes() == ["slice", "uplink"]
+    assert parsed.unit("uplink") == "cmd/s" and parsed.breaking_point("uplink", "rg1kHz") == 200
+    report.write(data, tmp_path)
+    markdown = (tmp_path / "report.md").read_text()
+    assert "| uplink | rg1kHz | 200 cmd/s | 200 cmd/s |" in markdown
+    assert "| uplink | rg100Hz | none up to 200 cmd/s | none up to 200 cmd/s |" in markdown
+    assert "| load (cmd/s) |" in markdown
+    assert "| uplink | 200 | 290 of 300 | 10 | 290 of 300 | 10 |" in markdown
+    lines = analysis.sweep_guidance(data, analysis.sweeps(data)).lines
+    assert "rtos, uplink load: rg1kHz misses deadlines from 200 cmd/s." in lines

@@ -8,9 +8,20 @@
 namespace Kit {
 
 LinkHealth::LinkHealth(const char* const compName)
-    : LinkHealthComponentBase(compName), m_detector(), m_unknownPackets(0) {}
+    : LinkHealthComponentBase(compName),
+      m_detector(),
+      m_unknownPackets(0),
+      m_inFlight(0),
+      m_commandsDropped(0),
+      m_inFlightLimit(0) {}
 
 LinkHealth::~LinkHealth() {}
+
+void LinkHealth::configure(FwSizeType accumulatorSize, U32 commandsInFlight) {
+    FW_ASSERT(commandsInFlight > 0);
+    m_detector.setCapacity(accumulatorSize);
+    m_inFlightLimit = commandsInFlight;
+}
 
 void LinkHealth::schedIn_handler(FwIndexType portNum, U32 context) {
     (void)portNum;
@@ -21,6 +32,31 @@ void LinkHealth::schedIn_handler(FwIndexType portNum, U32 context) {
     tlmWrite_BytesDiscarded(counts.bytesDiscarded);
     tlmWrite_Oversized(counts.oversized);
     tlmWrite_UnknownPackets(m_unknownPackets);
+    tlmWrite_CommandsDropped(m_commandsDropped.load());
+}
+
+void LinkHealth::commandIn_handler(FwIndexType portNum, Fw::ComBuffer& data, U32 context) {
+    (void)portNum;
+    FW_ASSERT(m_inFlightLimit > 0);  // configure() first
+    const U32 inFlight = m_inFlight.load();
+    if (inFlight >= m_inFlightLimit) {
+        // Only the link's context sends: the count cannot rise meanwhile
+        const U32 dropped = m_commandsDropped.fetch_add(1) + 1;
+        this->log_WARNING_HI_CommandDropped(inFlight, dropped);
+        return;
+    }
+    m_inFlight.fetch_add(1);
+    this->commandOut_out(0, data, context);
+}
+
+void LinkHealth::commandStatusIn_handler(FwIndexType portNum,
+                                         FwOpcodeType opCode,
+                                         U32 cmdSeq,
+                                         const Fw::CmdResponse& response) {
+    (void)portNum;
+    const U32 before = m_inFlight.fetch_sub(1);
+    FW_ASSERT(before > 0, static_cast<FwAssertArgType>(opCode));  // an answer to a command never sent
+    this->commandStatusOut_out(0, opCode, cmdSeq, response);
 }
 
 void LinkHealth::unknownIn_handler(FwIndexType portNum, Fw::Buffer& data, const ComCfg::FrameContext& context) {

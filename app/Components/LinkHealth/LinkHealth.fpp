@@ -7,7 +7,11 @@ module Kit {
     @ frames whose checksum fails without a trace, and F´'s FprimeRouter
     @ drops packets of a type it does not know; the kit's frame detector
     @ (CountingFrameDetector, in this folder) counts the first two, and the
-    @ router hands the third here.
+    @ router hands the third here. Ground commands pass it on their way to
+    @ the dispatcher: it keeps no more than the configured number in flight
+    @ (sent, not yet answered), so a ground that sends faster than the
+    @ dispatcher runs loses commands, counted, instead of overrunning the
+    @ dispatcher's queue, which asserts when full.
     passive component LinkHealth {
 
         @ Telemetry out (10 Hz rate group)
@@ -19,7 +23,26 @@ module Kit {
         @ Their buffers, back to the router (its fileBufferReturnIn)
         output port unknownReturnOut: Fw.BufferSend
 
+        @ Ground commands from the router
+        sync input port commandIn: Fw.Com
+
+        @ ... to the dispatcher, while fewer than the limit are in flight
+        output port commandOut: Fw.Com
+
+        @ The dispatcher's answer to a ground command
+        sync input port commandStatusIn: Fw.CmdResponse
+
+        @ ... back to the router
+        output port commandStatusOut: Fw.CmdResponse
+
         time get port timeCaller
+
+        event port logOut
+
+        text event port logTextOut
+
+        @ A ground command arrived with the limit in flight: dropped
+        event CommandDropped(inFlight: U32, total: U32) severity warning high id 0 format "Ground command dropped: {} already in flight to the dispatcher ({} dropped in all)" throttle 5
 
         telemetry port tlmOut
 
@@ -40,5 +63,8 @@ module Kit {
 
         @ Well-framed packets of a type the router does not route
         telemetry UnknownPackets: U32 id 4
+
+        @ Ground commands dropped because the dispatcher had the limit in flight
+        telemetry CommandsDropped: U32 id 5
     }
 }

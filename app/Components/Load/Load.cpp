@@ -13,6 +13,8 @@ Load::Load(const char* const compName)
       m_sliceUs(0),
       m_burstCount(0),
       m_burstUs(0),
+      m_downlinkPackets(0),
+      m_downlinkSequence(0),
       m_processed(0),
       m_dropped(0),
       m_lcg(1) {}
@@ -30,6 +32,11 @@ void Load::sliceIn_handler(FwIndexType portNum, U32 context) {
     (void)portNum;
     (void)context;
     this->compute(m_sliceUs);
+    const U32 packets = m_downlinkPackets;
+    for (U32 i = 0; i < packets; i++) {
+        this->log_ACTIVITY_LO_DownlinkLoadPacket(m_downlinkSequence);
+        m_downlinkSequence++;
+    }
     this->tlmWrite_Processed(m_processed);
 }
 
@@ -87,6 +94,17 @@ void Load::SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 
     m_burstCount = count;
     m_burstUs = us;
     this->log_ACTIVITY_HI_LoadSet(m_sliceUs, count, us);
+    this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
+}
+
+void Load::SET_DOWNLINK_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 packets) {
+    if (packets > DOWNLINK_MAX) {
+        this->log_WARNING_LO_LoadRejected(packets, DOWNLINK_MAX);
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
+        return;
+    }
+    m_downlinkPackets = packets;
+    this->log_ACTIVITY_HI_DownlinkLoadSet(packets);
     this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
 }
 

@@ -39,12 +39,25 @@ module Kit {
             us: U32 @< Microseconds of computation per message, at most SLICE_MAX_US
         ) opcode 1
 
+        @ Set the extra downlink packets sent with every slice message (100 Hz):
+        @ the downlink axis of the serial-load sweep. Events, not telemetry
+        @ channels: every event is a packet of its own, while a channel
+        @ written twice between downlinks is sent once.
+        sync command SET_DOWNLINK(
+            perSlice: U32 @< Events per slice message, at most DOWNLINK_MAX
+        ) opcode 2
+
         event LoadSet(sliceUs: U32, burst: U32, burstUs: U32) severity activity high id 0 format "Load: {} us per slice, bursts of {} x {} us"
 
         event LoadRejected(value: U32, limit: U32) severity warning low id 1 format "Load setting {} is above its limit {}"
 
         @ The queue was full: the load falls behind (an overrun of the lowest priority)
         event MessagesDropped(total: U32) severity warning high id 2 format "Load queue full: {} messages dropped so far" throttle 5
+
+        event DownlinkLoadSet(perSlice: U32) severity activity high id 3 format "Downlink load: {} packets per slice"
+
+        @ One extra downlink packet (SET_DOWNLINK); its number counts them all
+        event DownlinkLoadPacket(sequence: U32) severity activity low id 4 format "Downlink load packet {}"
 
         @ Slice and burst messages processed
         telemetry Processed: U32 id 0

@@ -18,6 +18,8 @@ class Load final : public LoadComponentBase {
     //! Most messages one burst may push (the queue holds fewer: a burst above
     //! its depth is how an overrun of the load is provoked)
     static constexpr U32 BURST_MAX = 32;
+    //! Extra downlink packets per slice message (the events queue holds 8)
+    static constexpr U32 DOWNLINK_MAX = 16;
 
     explicit Load(const char* const compName);
     ~Load();
@@ -36,6 +38,7 @@ class Load final : public LoadComponentBase {
 
     void SET_SLICE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 us) override;
     void SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 us) override;
+    void SET_DOWNLINK_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 packets) override;
 
     //! A message the queue could not take
     void dropOne();
@@ -47,6 +50,8 @@ class Load final : public LoadComponentBase {
     volatile U32 m_sliceUs;
     volatile U32 m_burstCount;
     volatile U32 m_burstUs;
+    volatile U32 m_downlinkPackets;
+    U32 m_downlinkSequence;
     U32 m_processed;
     U32 m_dropped;
     U32 m_lcg;  //!< the computation's state, kept so it is not optimized away

@@ -14,7 +14,14 @@
 namespace Kit {
 
 Timing::Timing(const char* const compName)
-    : TimingComponentBase(compName), m_records(), m_count(0), m_cyclesPerTick(0), m_ticksDriven(0) {}
+    : TimingComponentBase(compName),
+      m_records(),
+      m_count(0),
+      m_cyclesPerTick(0),
+      m_ticksDriven(0),
+      m_segmentState(SEGMENTS_OFF),
+      m_hyperperiod(0),
+      m_segment() {}
 
 Timing::~Timing() {}
 
@@ -161,6 +168,52 @@ void Timing::cycleEnd_handler(FwIndexType portNum, U32 context) {
         this->tlmWrite_FastCycles(rg.cycles);
         this->tlmWrite_FastMaxLatency(rg.latency.max());
     }
+}
+
+void Timing::serveSegments(U32 hyperperiod) {
+    FW_ASSERT(hyperperiod > 0);
+    m_hyperperiod = hyperperiod;
+    m_segmentState.store(SEGMENT_IDLE);
+}
+
+bool Timing::segmentRequested() const {
+    return m_segmentState.load() == SEGMENT_REQUESTED;
+}
+
+Timing::Segment Timing::takeSegment() const {
+    FW_ASSERT(this->segmentRequested());
+    return m_segment;
+}
+
+void Timing::segmentDone() {
+    FW_ASSERT(this->segmentRequested());
+    m_segmentState.store(SEGMENT_IDLE);
+}
+
+void Timing::MEASURE_SEGMENT_cmdHandler(FwOpcodeType opCode,
+                                        U32 cmdSeq,
+                                        SegmentAxis axis,
+                                        U32 point,
+                                        U32 level,
+                                        U32 ticks) {
+    const U32 state = m_segmentState.load();
+    SegmentRefusal refusal = SegmentRefusal::NOT_SERVED;
+    bool refused = true;
+    if (state == SEGMENT_REQUESTED) {
+        refusal = SegmentRefusal::BUSY;
+    } else if (state == SEGMENT_IDLE) {
+        refused = ticks == 0 || ticks > SEGMENT_MAX_TICKS || (ticks % m_hyperperiod) != 0;
+        refusal = SegmentRefusal::BAD_LENGTH;
+    }
+    if (refused) {
+        this->log_WARNING_LO_SegmentRefused(refusal, ticks);
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
+        return;
+    }
+    m_segment = {axis, point, level, ticks};
+    m_segmentState.store(SEGMENT_REQUESTED);
+    this->log_ACTIVITY_HI_SegmentRequested(axis, point, level, ticks);
+    this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
 }
 
 }  // namespace Kit

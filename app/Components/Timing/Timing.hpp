@@ -9,6 +9,8 @@
 #include "app/Components/Timing/CycleStats.hpp"
 #include "app/Components/Timing/TimingComponentAc.hpp"
 
+#include <atomic>
+
 namespace Kit {
 
 //! How one rate group is derived from the tick (mirrors Svc::RateGroupDriver::Divider)
@@ -61,6 +63,26 @@ class Timing final : public TimingComponentBase {
     //! the rate group driver's phase matches the records' again.
     void restart(U32 hyperperiod);
 
+    //! A segment the ground asked for (MEASURE_SEGMENT)
+    struct Segment {
+        SegmentAxis axis;
+        U32 point;
+        U32 level;
+        U32 ticks;
+    };
+    //! Longest segment the ground may ask for: 10 s at 1 kHz
+    static constexpr U32 SEGMENT_MAX_TICKS = 10000;
+
+    //! The ground scenario measures segments on request from now on, each a
+    //! whole number of `hyperperiod` ticks; before, MEASURE_SEGMENT is refused
+    void serveSegments(U32 hyperperiod);
+    //! A segment was requested and not yet taken (the main loop asks)
+    bool segmentRequested() const;
+    //! The requested segment; the next request is accepted once it was
+    //! measured (segmentDone())
+    Segment takeSegment() const;
+    void segmentDone();
+
     FwIndexType rateGroupCount() const { return m_count; }
     const RateGroupRecord& record(FwIndexType rateGroup) const;
     //! Ticks handed to the rate group driver
@@ -72,6 +94,8 @@ class Timing final : public TimingComponentBase {
   private:
     void cycleStart_handler(FwIndexType portNum, U32 context) override;
     void cycleEnd_handler(FwIndexType portNum, U32 context) override;
+    void MEASURE_SEGMENT_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, SegmentAxis axis, U32 point, U32 level, U32 ticks)
+        override;
 
     static constexpr U32 TLM_DECIMATION = 100;
 
@@ -88,6 +112,12 @@ class Timing final : public TimingComponentBase {
     U32 m_ticksDriven;
     SampleHash m_hash;
     Os::RawTime m_rawTime;
+    // Written by the command's thread (the dispatcher's), read by the main
+    // loop: the request is complete before m_segmentState says so
+    enum SegmentState : U32 { SEGMENTS_OFF, SEGMENT_IDLE, SEGMENT_REQUESTED };
+    std::atomic<U32> m_segmentState;
+    U32 m_hyperperiod;
+    Segment m_segment;
 };
 
 }  // namespace Kit

@@ -22,6 +22,11 @@ TEST(Load, AFullQueueDropsCountsAndReports) {
     tester.aFullQueueDropsCountsAndReports();
 }
 
+TEST(Load, EverySliceSendsTheCommandedDownlinkPackets) {
+    Kit::LoadTester tester;
+    tester.everySliceSendsTheCommandedDownlinkPackets();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -50,6 +50,25 @@ void LoadTester::settingsAboveTheirLimitsAreRejected() {
     EXPECT_LE(FakeTickClock::now - before, 2 * READING_STEP);
 }
 
+void LoadTester::everySliceSendsTheCommandedDownlinkPackets() {
+    this->sendCmd_SET_DOWNLINK(0, 5, Load::DOWNLINK_MAX + 1);
+    ASSERT_CMD_RESPONSE(0, LoadComponentBase::OPCODE_SET_DOWNLINK, 5, Fw::CmdResponse::VALIDATION_ERROR);
+    ASSERT_EVENTS_LoadRejected(0, Load::DOWNLINK_MAX + 1, Load::DOWNLINK_MAX);
+    this->sendCmd_SET_DOWNLINK(0, 6, 3);
+    ASSERT_CMD_RESPONSE(1, LoadComponentBase::OPCODE_SET_DOWNLINK, 6, Fw::CmdResponse::OK);
+    ASSERT_EVENTS_DownlinkLoadSet(0, 3);
+    this->clearHistory();
+    for (U32 slice = 0; slice < 2; slice++) {
+        this->invoke_to_sliceIn(0, 0);
+        ASSERT_EQ(this->component.doDispatch(), Fw::QueuedComponentBase::MSG_DISPATCH_OK);
+    }
+    // Numbered across slices, so the ground can tell a lost packet
+    ASSERT_EVENTS_DownlinkLoadPacket_SIZE(6);
+    for (U32 i = 0; i < 6; i++) {
+        ASSERT_EVENTS_DownlinkLoadPacket(i, i);
+    }
+}
+
 void LoadTester::burstPushesTheCommandedMessages() {
     this->sendCmd_SET_BURST(0, 4, 3, 10);
     ASSERT_CMD_RESPONSE(0, LoadComponentBase::OPCODE_SET_BURST, 4, Fw::CmdResponse::OK);

@@ -21,6 +21,7 @@ class LoadTester : public LoadGTestBase {
     void settingsAboveTheirLimitsAreRejected();
     void burstPushesTheCommandedMessages();
     void aFullQueueDropsCountsAndReports();
+    void everySliceSendsTheCommandedDownlinkPackets();
 
   private:
     void connectPorts();

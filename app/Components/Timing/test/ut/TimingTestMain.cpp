@@ -37,6 +37,11 @@ TEST(Timing, RestartRefusesASegmentOffTheHyperperiod) {
     tester.restartRefusesASegmentOffTheHyperperiod();
 }
 
+TEST(Timing, SegmentsOnlyWhenServedWholeHyperperiodsOneAtATime) {
+    Kit::TimingTester tester;
+    tester.segmentsOnlyWhenServedWholeHyperperiodsOneAtATime();
+}
+
 TEST(Timing, ProbeCostLeavesTheRunUntouched) {
     Kit::TimingTester tester;
     tester.probeCostLeavesTheRunUntouched();

@@ -134,4 +134,45 @@ void TimingTester::restartRefusesASegmentOffTheHyperperiod() {
     EXPECT_DEATH(component.restart(100), "");
 }
 
+void TimingTester::segmentsOnlyWhenServedWholeHyperperiodsOneAtATime() {
+    const FwOpcodeType opcode = TimingComponentBase::OPCODE_MEASURE_SEGMENT;
+    // A scenario with its own sequence does not serve requests
+    this->sendCmd_MEASURE_SEGMENT(0, 1, SegmentAxis::UPLINK, 0, 50, 1000);
+    ASSERT_CMD_RESPONSE(0, opcode, 1, Fw::CmdResponse::VALIDATION_ERROR);
+    ASSERT_EVENTS_SegmentRefused(0, SegmentRefusal::NOT_SERVED, 1000);
+    EXPECT_FALSE(component.segmentRequested());
+
+    component.serveSegments(100);
+    // Not whole hyperperiods, none at all, or too long
+    const U32 badLengths[] = {150, 0, Timing::SEGMENT_MAX_TICKS + 100};
+    for (const U32 ticks : badLengths) {
+        this->clearHistory();
+        this->sendCmd_MEASURE_SEGMENT(0, 2, SegmentAxis::UPLINK, 0, 50, ticks);
+        ASSERT_CMD_RESPONSE(0, opcode, 2, Fw::CmdResponse::VALIDATION_ERROR);
+        ASSERT_EVENTS_SegmentRefused(0, SegmentRefusal::BAD_LENGTH, ticks);
+    }
+    EXPECT_FALSE(component.segmentRequested());
+
+    this->clearHistory();
+    this->sendCmd_MEASURE_SEGMENT(0, 3, SegmentAxis::DOWNLINK, 4, 800, 1000);
+    ASSERT_CMD_RESPONSE(0, opcode, 3, Fw::CmdResponse::OK);
+    ASSERT_EVENTS_SegmentRequested(0, SegmentAxis::DOWNLINK, 4, 800, 1000);
+    ASSERT_TRUE(component.segmentRequested());
+    const Timing::Segment segment = component.takeSegment();
+    EXPECT_EQ(segment.axis, SegmentAxis::DOWNLINK);
+    EXPECT_EQ(segment.point, 4u);
+    EXPECT_EQ(segment.level, 800u);
+    EXPECT_EQ(segment.ticks, 1000u);
+
+    // One at a time: the next waits until this one is measured
+    this->clearHistory();
+    this->sendCmd_MEASURE_SEGMENT(0, 4, SegmentAxis::UPLINK, 0, 50, 1000);
+    ASSERT_CMD_RESPONSE(0, opcode, 4, Fw::CmdResponse::VALIDATION_ERROR);
+    ASSERT_EVENTS_SegmentRefused(0, SegmentRefusal::BUSY, 1000);
+    component.segmentDone();
+    EXPECT_FALSE(component.segmentRequested());
+    this->sendCmd_MEASURE_SEGMENT(0, 5, SegmentAxis::UPLINK, 0, 50, 1000);
+    ASSERT_CMD_RESPONSE(1, opcode, 5, Fw::CmdResponse::OK);
+}
+
 }  // namespace Kit

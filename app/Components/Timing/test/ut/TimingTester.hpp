@@ -24,6 +24,7 @@ class TimingTester : public TimingGTestBase {
     void probeCostLeavesTheRunUntouched();
     void restartEmptiesTheRecordsAndKeepsTheHash();
     void restartRefusesASegmentOffTheHyperperiod();
+    void segmentsOnlyWhenServedWholeHyperperiodsOneAtATime();
 
   private:
     void from_CycleOut_handler(FwIndexType portNum, Os::RawTime& cycleStart) override;
