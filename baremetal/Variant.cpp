@@ -38,6 +38,9 @@ constexpr U32 PAINT_GUARD_BYTES = 128;  // below the current frame, left alone
 // the run stops before corrupted memory is trusted.
 constexpr U32 GUARD_WORDS = 8;
 
+// The main stack was painted (prepareStacks()): its guard means something
+bool s_painted = false;
+
 // Cycles the main loop spent asleep waiting for a tick, and how often
 U64 s_idleCycles = 0;
 U32 s_idleWaits = 0;
@@ -47,9 +50,7 @@ U32* stackBottom() {
     return reinterpret_cast<U32*>(K_KERNEL_STACK_BUFFER(z_main_stack));
 }
 
-// One pass of every task, then the stack guard
-GuardBreach runPass() {
-    Os::Baremetal::TaskRunner::getSingleton().runAll();
+GuardBreach checkGuard() {
     const U32* const bottom = stackBottom();
     for (U32 i = 0; i < GUARD_WORDS; i++) {
         if (bottom[i] != PAINT) {
@@ -57,6 +58,12 @@ GuardBreach runPass() {
         }
     }
     return {false, 0, 0};
+}
+
+// One pass of every task, then the stack guard
+GuardBreach runPass() {
+    Os::Baremetal::TaskRunner::getSingleton().runAll();
+    return checkGuard();
 }
 
 U32 mainStackUsed() {
@@ -104,6 +111,11 @@ GuardBreach afterTick() {
     return runPass();
 }
 
+GuardBreach guardState() {
+    // Unpainted, the guard says nothing (a fault during boot)
+    return s_painted ? checkGuard() : GuardBreach{false, 0, 0};
+}
+
 GuardBreach drain() {
     for (U32 pass = 0; pass < DRAIN_PASSES; pass++) {
         const GuardBreach breach = runPass();
@@ -120,6 +132,7 @@ void prepareStacks() {
     for (U32* word = stackBottom(); reinterpret_cast<uintptr_t>(word) < end; word++) {
         *word = PAINT;
     }
+    s_painted = true;
 }
 
 U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {

@@ -15,6 +15,7 @@
 // ======================================================================
 #include "app/src/Fatal.hpp"
 #include "app/src/Report.hpp"
+#include "app/src/Variant.hpp"
 
 #include <zephyr/fatal.h>
 #include <zephyr/kernel.h>
@@ -50,6 +51,15 @@ void Kit::Fatal::expect(unsigned int reason) {
 }
 
 void Kit::Fatal::halt(unsigned int reason) {
+    // Without an MPU, an overflow of the baremetal main stack runs into the
+    // interrupt stack below it, and an interrupt taken meanwhile returns
+    // through a frame the overflow shares: a CPU fault before the guard is
+    // checked. A fault with the guard's paint gone is that overflow.
+    const Kit::Variant::GuardBreach breach = Kit::Variant::guardState();
+    if (breach.breached && reason != K_ERR_STACK_CHK_FAIL) {
+        Kit::Report::guardBreach(breach);
+        reason = K_ERR_STACK_CHK_FAIL;
+    }
     const bool expected = s_expecting && reason == s_expectedReason;
     Kit::Report::halt(reasonName(reason), reason, expected);
     // Nothing else may run: Zephyr's halt masks interrupts and spins until the

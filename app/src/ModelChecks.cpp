@@ -47,6 +47,12 @@ static_assert(Link::commandsInFlight + 2 <= Queues::cmdDisp,
               "dispatcher's 10 Hz call and a scripted command");
 
 #if defined(CONFIG_KIT_MODEL_RTOS)
+// ComQueue answers each of its sends through its own queue, which asserts
+// when full: no thread that feeds that queue may run between its taking a
+// message and that answer (boards/<board>/Tables.fpp says why)
+static_assert(Priorities::comQueue > Priorities::events && Priorities::comQueue > Priorities::tlmSend,
+              "boards/<board>/Tables.fpp: the downlink (comQueue) must be more urgent than the events and "
+              "telemetry services that feed it");
 // fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
 static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,
               "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model) must give one slot per active instance");

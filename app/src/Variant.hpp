@@ -74,6 +74,10 @@ GuardBreach afterTick();
 //! After the last tick: let queued work finish before results are read
 GuardBreach drain();
 
+//! The stack guard as it is now, running nothing: a fatal report asks, so a
+//! fault that an overflow caused before the guard was checked is named one
+GuardBreach guardState();
+
 //! Before setup: prepare stack measurement (baremetal paints the main stack)
 void prepareStacks();
 

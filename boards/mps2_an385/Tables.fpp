@@ -8,16 +8,21 @@ module Kit {
   # baremetal TaskRunner runs tasks in this order within a pass; the RTOS
   # variant maps it onto Zephyr's preemptive priorities (lower is more urgent)
   # in rtos/Os/PriorityMap.hpp. The tick (the main loop) is above all of them
-  # in both. Rate groups by rate, then the services, then the downlink, then
-  # the background load.
+  # in both. Rate groups by rate, then the dispatcher, then the downlink
+  # above the services that feed it, then the background load. The downlink
+  # (ComQueue) must be above them: it answers its own sends through its own
+  # queue (comStatusIn), which asserts when full, and a feeder that runs
+  # between its taking a message and that answer can fill the slot it freed
+  # (mps2/an385 rtos did, under uplink fuzzing and the load sweep). Checked in
+  # app/src/ModelChecks.cpp.
   module Priorities {
     constant rg1kHz = 12
     constant rg100Hz = 11
     constant rg10Hz = 10
     constant cmdDisp = 6
-    constant events = 5
-    constant tlmSend = 4
-    constant comQueue = 3
+    constant comQueue = 5
+    constant events = 4
+    constant tlmSend = 3
     constant load = 2
   }
 

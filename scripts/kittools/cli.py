@@ -5,6 +5,7 @@
   kit report    turn a results file into report.md / .html / .json / .csv (optionally against a baseline)
   kit test      twister suite under QEMU, determinism, budget, ground-link integration, host and tooling tests
   kit gds       boot a board and model under QEMU with fprime-gds on its ground link
+  kit serial-sweep  the serial-load sweep of a board and model through its ground link
   kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
 """
 
@@ -18,7 +19,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, ground, report, results, style, testing
+from . import budget, ground, report, results, serial_sweep, style, sweep, testing
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant
 
@@ -136,6 +137,32 @@ def cmd_gds(args: argparse.Namespace) -> int:
         raise KitError(f"QEMU stopped on its own; its console:\n{station.console()[-3000:]}")
 
 
+def cmd_serial_sweep(args: argparse.Namespace) -> int:
+    board = args.board
+    check_board(board)
+    check_variant(args.model)
+    check_provisioned()
+    build_dir = ground.ground_build_dir(board, args.model)
+    logs = build_dir.with_name(build_dir.name + "-logs")
+    _say(f"building {board} {args.model} (ground scenario) ...")
+    ground.build_ground(board, args.model, logs / "build.log")
+    _say(f"serial-load sweep on {build_dir}'s link ...")
+    outcome = serial_sweep.run(build_dir)
+    out = logs / results.SERIAL_SWEEP_FILE
+    out.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
+    found = outcome.sweep()
+    for traffic in outcome.traffic:
+        if found is None:
+            break
+        at = {p.rate_group: p for p in found.points if p.axis == traffic.axis and p.level == traffic.level}
+        latency = ", ".join(f"{rg} p99/max {p.latency_p99}/{p.latency_max} cycles{' MISSED' if p.missed else ''}"
+                            for rg, p in at.items())
+        print(f"{traffic.axis} {sweep.level_text(traffic.level, found.unit(traffic.axis))}: {latency}; "
+              f"delivered {traffic.delivered()} of {traffic.offered()}")
+    _say(f"records: {out}")
+    return 0
+
+
 def cmd_new_board(args: argparse.Namespace) -> int:
     # Only Zephyr's board tree is needed (new_board says so if it is missing):
     # no F´ checkout, so a port can be scaffolded before the rest is fetched
@@ -173,6 +200,11 @@ def parser() -> argparse.ArgumentParser:
     g.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
     g.add_argument("--port", type=int, default=5000, help="the GDS web page's port (default: 5000)")
     g.set_defaults(func=cmd_gds)
+    w = sub.add_parser("serial-sweep", help="the serial-load sweep (uplink commands, downlink packets) of a board "
+                                            "and model, through its ground link under QEMU")
+    w.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
+    w.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
+    w.set_defaults(func=cmd_serial_sweep)
     n = sub.add_parser("new-board", help="scaffold boards/<board>/ for a new board and add it to the suite")
     n.add_argument("board", metavar="BOARD", help="board target as west build -b takes it (e.g. mps2/an385)")
     n.add_argument("--from", "--reference", dest="reference", metavar="REFERENCE", default=REFERENCE_BOARD,

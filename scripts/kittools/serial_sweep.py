@@ -90,12 +90,17 @@ class PointTraffic:
     #: MEASURE_SEGMENT commands sent (more than one: the link dropped one)
     requests: int = 0
 
+    def offered(self) -> int:
+        return self.commands_sent if self.axis == UPLINK.name else self.packets_received + self.packets_lost
+
+    def delivered(self) -> int:
+        return self.commands_dispatched if self.axis == UPLINK.name else self.packets_received
+
     def record(self) -> str:
         """The point as a console-style SERIAL record, beside the SWEEP lines."""
-        offered = self.commands_sent if self.axis == UPLINK.name else self.packets_received + self.packets_lost
-        delivered = self.commands_dispatched if self.axis == UPLINK.name else self.packets_received
-        return (f"KIT SERIAL axis={self.axis} point={self.point} level={self.level} offered={offered} "
-                f"delivered={delivered} lost={offered - delivered} receive_overruns={self.receive_overruns}")
+        return (f"KIT SERIAL axis={self.axis} point={self.point} level={self.level} offered={self.offered()} "
+                f"delivered={self.delivered()} lost={self.offered() - self.delivered()} "
+                f"receive_overruns={self.receive_overruns}")
 
 
 @dataclass
