@@ -47,6 +47,9 @@ namespace {
 
 // F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
 // the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
+// The F´ allocator's bytes the link's buffers, accumulator and queues took
+FwSizeType s_linkBufferBytes = 0;
+
 void configureLink(Fw::MemAllocator& allocator) {
     Svc::BufferManager::BufferBins bins = {};
     bins.bins[0].bufferSize = Link::bufferSize;
@@ -92,10 +95,16 @@ void configureTopology(const TopologyState& state) {
     (void)now.now();
     osTime.set_epoch(Fw::Time(0, 0), now);
 
+    const FwSizeType before = state.allocator.currentBytes();
     configureLink(state.allocator);
+    s_linkBufferBytes = state.allocator.currentBytes() - before;
 }
 
 }  // namespace
+
+FwSizeType linkBufferBytes() {
+    return s_linkBufferBytes;
+}
 
 FwOpcodeType noOpOpcode() {
     return cmdDisp.getIdBase() + CmdDispIds::NO_OP;

@@ -35,6 +35,10 @@ void teardownTopology(const TopologyState& state);
 //! Cycles rate group `rg` must complete in the first `ticks` ticks
 U32 expectedCycles(FwIndexType rg, U32 ticks);
 
+//! Bytes of the F´ allocator the ground link took at setup (BufferManager
+//! pool, frame accumulator, ComQueue's packet queues)
+FwSizeType linkBufferBytes();
+
 //! Opcode of the dispatcher's built-in NO_OP (its base ID + 0)
 FwOpcodeType noOpOpcode();
 

@@ -6,15 +6,15 @@
 #ifndef KIT_KITTOPOLOGYDEFS_HPP
 #define KIT_KITTOPOLOGYDEFS_HPP
 
-#include <Fw/Types/MemAllocator.hpp>
 #include "app/Top/FppConstantsAc.hpp"
+#include "app/src/CountingAllocator.hpp"
 
 namespace Kit {
-//! Nothing to pass at setup: the kit runs no ground link
 //! What the topology's setup needs from main: the allocator the ground
-//! link's queues and buffers come from (F´'s are registered with it too)
+//! link's queues and buffers come from (F´'s are registered with it too;
+//! it counts, so the link's share is known)
 struct TopologyState {
-    Fw::MemAllocator& allocator;
+    CountingAllocator& allocator;
 };
 }  // namespace Kit
 

@@ -25,6 +25,7 @@ class CountingAllocator final : public Fw::MemAllocator {
     //! Register for all of F´'s allocator types
     void registerForFprime();
     FwSizeType peakBytes() const { return m_peak; }
+    FwSizeType currentBytes() const { return m_current; }
     U32 allocations() const { return m_allocations; }
 
   private:

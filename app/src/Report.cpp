@@ -174,11 +174,12 @@ bool downlinkAndTicks() {
 bool heap(const CountingAllocator& allocator) {
     printk(
         "KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
-        "failures=%u arena=%u\n",
+        "failures=%u arena=%u link_buffers=%u\n",
         static_cast<unsigned>(allocator.peakBytes()), static_cast<unsigned>(allocator.allocations()),
         static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
         static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
-        static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
+        static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE),
+        static_cast<unsigned>(linkBufferBytes()));
     return HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
 }
 

@@ -40,6 +40,8 @@ def metrics(data: VariantData) -> dict[MetricId, float]:
         heap = run.one("HEAP")
         values[model.HEAP_FPRIME_PEAK] = heap.int("fprime_peak")
         values[model.HEAP_REQUESTED] = heap.int("bytes")
+        if "link_buffers" in heap.fields:
+            values[model.HEAP_LINK] = heap.int("link_buffers")
     stacks = run.of_kind("STACK")
     values[model.STACKS_RESERVED] = sum(s.int("size") for s in stacks)
     values[model.STACKS_USED] = sum(s.int("used") for s in stacks)

@@ -65,6 +65,7 @@ ROM = MetricId("footprint", "rom", unit="bytes")
 RAM = MetricId("footprint", "ram", unit="bytes")
 HEAP_FPRIME_PEAK = MetricId("heap", "fprime_peak", unit="bytes")
 HEAP_REQUESTED = MetricId("heap", "requested", unit="bytes")
+HEAP_LINK = MetricId("heap", "link_buffers", unit="bytes")
 STACKS_RESERVED = MetricId("stacks", "reserved", unit="bytes")
 STACKS_USED = MetricId("stacks", "used_peak", unit="bytes")
 
@@ -88,6 +89,7 @@ LABELS: dict[MetricId, str] = {
     RAM: "RAM, static (bytes)",
     HEAP_FPRIME_PEAK: "heap, F´ allocator peak (bytes)",
     HEAP_REQUESTED: "heap, all users (bytes requested)",
+    HEAP_LINK: "heap, ground link's buffers and queues (bytes, part of the F´ allocator's)",
     STACKS_RESERVED: "stacks reserved (bytes)",
     STACKS_USED: "stacks used, peak (bytes)",
 }
