@@ -50,7 +50,8 @@ static_assert(Link::commandsInFlight + 2 <= Queues::cmdDisp,
 // ComQueue answers each of its sends through its own queue, which asserts
 // when full: no thread that feeds that queue may run between its taking a
 // message and that answer (boards/<board>/Tables.fpp says why)
-static_assert(Priorities::comQueue > Priorities::events && Priorities::comQueue > Priorities::tlmSend,
+static_assert(static_cast<int>(Priorities::comQueue) > static_cast<int>(Priorities::events) &&
+                  static_cast<int>(Priorities::comQueue) > static_cast<int>(Priorities::tlmSend),
               "boards/<board>/Tables.fpp: the downlink (comQueue) must be more urgent than the events and "
               "telemetry services that feed it");
 // fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
