@@ -12,16 +12,18 @@ module Kit {
   # (ComQueue) must be above them: it answers its own sends through its own
   # queue (comStatusIn), which asserts when full, and a feeder that runs
   # between its taking a message and that answer can fill the slot it freed
-  # (mps2/an385 rtos did, under uplink fuzzing and the load sweep). Checked in
-  # app/src/ModelChecks.cpp.
+  # (mps2/an385 rtos did, under uplink fuzzing and the load sweep; checked in
+  # app/src/ModelChecks.cpp). Telemetry is above events: F´'s TlmChan asserts
+  # when its 10 Hz calls fill its queue, where the event logger drops (a
+  # flood of events starved it on mps2/an385 rtos at 300 commands/s).
   module Priorities {
     constant rg1kHz = 12
     constant rg100Hz = 11
     constant rg10Hz = 10
     constant cmdDisp = 6
     constant comQueue = 5
-    constant events = 4
-    constant tlmSend = 3
+    constant tlmSend = 4
+    constant events = 3
     constant load = 2
   }
 

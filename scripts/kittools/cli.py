@@ -114,15 +114,21 @@ def cmd_test(args: argparse.Namespace) -> int:
     return 0 if total.failed == 0 and total.passed > 0 else 1
 
 
-def cmd_gds(args: argparse.Namespace) -> int:
-    board = args.board
-    check_board(board)
+def _ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
+    """The ground scenario's build of --board and --model, built or brought
+    up to date; returns it and its logs folder."""
+    check_board(args.board)
     check_variant(args.model)
     check_provisioned()
-    build_dir = ground.ground_build_dir(board, args.model)
+    build_dir = ground.ground_build_dir(args.board, args.model)
     logs = build_dir.with_name(build_dir.name + "-logs")
-    _say(f"building {board} {args.model} (ground scenario) ...")
-    ground.build_ground(board, args.model, logs / "build.log")
+    _say(f"building {args.board} {args.model} (ground scenario) ...")
+    ground.build_ground(args.board, args.model, logs / "build.log")
+    return build_dir, logs
+
+
+def cmd_gds(args: argparse.Namespace) -> int:
+    build_dir, logs = _ground_build(args)
     with ground.GroundStation(build_dir, logs, gui=True, gui_port=args.port) as station:
         _say(f"QEMU runs {build_dir}; its link: {station.link.socket}")
         _say(f"fprime-gds: http://127.0.0.1:{args.port} (dictionary {station.link.dictionary})")
@@ -138,14 +144,7 @@ def cmd_gds(args: argparse.Namespace) -> int:
 
 
 def cmd_serial_sweep(args: argparse.Namespace) -> int:
-    board = args.board
-    check_board(board)
-    check_variant(args.model)
-    check_provisioned()
-    build_dir = ground.ground_build_dir(board, args.model)
-    logs = build_dir.with_name(build_dir.name + "-logs")
-    _say(f"building {board} {args.model} (ground scenario) ...")
-    ground.build_ground(board, args.model, logs / "build.log")
+    build_dir, logs = _ground_build(args)
     _say(f"serial-load sweep on {build_dir}'s link ...")
     outcome = serial_sweep.run(build_dir)
     out = logs / results.SERIAL_SWEEP_FILE

@@ -31,7 +31,7 @@ def sweep_sections(data: Results) -> list[Section]:
     if not found or cycles_hz <= 0:
         return []
     sections: list[Section] = [tables.breaking_points_table(found), analysis.sweep_guidance(data, found)]
-    for axis in found[sorted(found)[0]].axes():
+    for axis in dict.fromkeys(a for v in sorted(found) for a in found[v].axes()):
         sections += [plots.sweep_chart(found, cycles_hz, axis), tables.sweep_table(found, cycles_hz, axis)]
     link = tables.serial_link_table(data)
     return sections + ([link] if link is not None else [])

@@ -94,10 +94,11 @@ def breaking_points_table(found: dict[str, sweep.Sweep]) -> Table:
     names = sorted(found)
     first = found[names[0]]
     rows = []
-    for axis in first.axes():
+    for axis in dict.fromkeys(a for v in names for a in found[v].axes()):
         for rg in first.rate_groups():
             rows.append([axis, rg] + [break_text(found[v].breaking_point(axis, rg), found[v].max_load(axis),
-                                                 found[v].unit(axis)) for v in names])
+                                                 found[v].unit(axis)) if axis in found[v].axes() else "not run"
+                                      for v in names])
     return Table("Load sweeps: breaking points (smallest load at which a rate group missed a deadline)",
                  ["load axis", "rate group"] + names, rows)
 

@@ -124,3 +124,15 @@ def test_a_serial_axis_is_reported_in_its_own_unit(tmp_path):
     assert "| uplink | 200 | 290 of 300 | 10 | 290 of 300 | 10 |" in markdown
     lines = analysis.sweep_guidance(data, analysis.sweeps(data)).lines
     assert "rtos, uplink load: rg1kHz misses deadlines from 200 cmd/s." in lines
+
+
+def test_an_axis_one_variant_did_not_run_says_so(tmp_path):
+    data = results()
+    line = ("KIT SWEEP axis=downlink point=0 level=0 unit=pkt/s burst=0 rg=rg1kHz hz=1000 cycles=1000 "
+            "expected=1000 slips=0 late_starts=0 latency_p99=720 latency_max=900 jitter_p99=12 jitter_max=24 "
+            "exec_max=200 load_runs=100 load_dropped=0")
+    record = console.parse_line(line)
+    assert record is not None
+    data.variants["rtos"].records.append({"kind": record.kind, **record.fields})
+    report.write(data, tmp_path)
+    assert "| downlink | rg1kHz | not run | none up to 0 pkt/s |" in (tmp_path / "report.md").read_text()
