@@ -206,4 +206,15 @@ macro(kit_zephyr_link)
         zephyr_ld_options("-Wl,--wrap=${KIT_HEAP_FUNCTION}")
     endforeach()
     include("${KIT_ROOT}/app/provenance.cmake")
+
+    # The id of the topology's dictionary (F´ lists it on the topology
+    # module), compiled in for the LINK line: app/dictionary_id.cmake
+    set(KIT_DICTIONARY_ID_HEADER "${CMAKE_BINARY_DIR}/kit/KitDictionaryId.hpp")
+    add_custom_command(OUTPUT "${KIT_DICTIONARY_ID_HEADER}"
+        COMMAND "${CMAKE_COMMAND}" "-DDICTIONARY=$<TARGET_PROPERTY:app_Top,FPRIME_DICTIONARIES>"
+            "-DOUTPUT=${KIT_DICTIONARY_ID_HEADER}" -P "${KIT_ROOT}/app/dictionary_id.cmake"
+        DEPENDS "$<TARGET_PROPERTY:app_Top,FPRIME_DICTIONARIES>" "${KIT_ROOT}/app/dictionary_id.cmake"
+        COMMENT "Naming the F´ dictionary for the LINK line")
+    target_sources(app PRIVATE "${KIT_DICTIONARY_ID_HEADER}")
+    target_include_directories(app PRIVATE "${CMAKE_BINARY_DIR}/kit")
 endmacro()

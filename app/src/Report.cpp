@@ -8,6 +8,7 @@
 #include "app/Top/GeneratedIds.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "app/src/HeapMonitor.hpp"
+#include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
 
 #include <zephyr/device.h>
 #include <zephyr/devicetree.h>
@@ -144,7 +145,9 @@ void banner() {
 }
 
 void linkReady() {
-    printk("KIT LINK ready uart=%s\n", DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name);
+    // The dictionary id lets the ground refuse another build's dictionary
+    printk("KIT LINK ready uart=%s dictionary=%s\n", DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name,
+           KIT_DICTIONARY_ID);
 }
 
 bool commands(const Uplink::Frame* frames, FwSizeType count) {

@@ -129,7 +129,7 @@ def _ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
 
 def cmd_gds(args: argparse.Namespace) -> int:
     build_dir, logs = _ground_build(args)
-    with ground.GroundStation(build_dir, logs, gui=True, gui_port=args.port) as station:
+    with ground.GroundStation(build_dir, logs, gui=True, gui_port=args.port, dictionary=args.dictionary) as station:
         _say(f"QEMU runs {build_dir}; its link: {station.link.socket}")
         _say(f"fprime-gds: http://127.0.0.1:{args.port} (dictionary {station.link.dictionary})")
         _say(f"from a shell: fprime-cli command-send Kit.cmdDisp.CMD_NO_OP {' '.join(station.client_arguments())}")
@@ -198,6 +198,9 @@ def parser() -> argparse.ArgumentParser:
     g.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
     g.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
     g.add_argument("--port", type=int, default=5000, help="the GDS web page's port (default: 5000)")
+    g.add_argument("--dictionary", type=Path, default=None,
+                   help="the F´ dictionary to give fprime-gds (default: the build's own; refused unless it is "
+                        "the one the firmware was built with)")
     g.set_defaults(func=cmd_gds)
     w = sub.add_parser("serial-sweep", help="the serial-load sweep (uplink commands, downlink packets) of a board "
                                             "and model, through its ground link under QEMU")

@@ -11,6 +11,7 @@ suite (tests/integration) use it.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import re
 import shutil
@@ -29,8 +30,10 @@ BOOT_TIMEOUT_S = 60.0
 GDS_TIMEOUT_S = 60.0
 # fprime-gds prints this once its every application is up
 GDS_READY = "F prime is now running"
-# The firmware's line once its link is up (app/src/Report.cpp)
+# The firmware's line once its link is up (app/src/Report.cpp), with the id
+# of the dictionary it was built with (app/dictionary_id.cmake)
 LINK_READY = "KIT LINK ready"
+LINK_DICTIONARY = re.compile(r"\bdictionary=([0-9a-f]+)")
 
 
 @dataclass(frozen=True)
@@ -43,15 +46,50 @@ class Link:
     board: str  # the board target the build is for
 
 
-def link_of(build_dir: Path) -> Link:
-    """The link socket and the dictionary of a built kit build."""
+def dictionary_id(dictionary: Path) -> str:
+    """A dictionary's id, as app/dictionary_id.cmake compiles it in."""
+    return hashlib.sha256(dictionary.read_bytes()).hexdigest()[:16]
+
+
+def link_of(build_dir: Path, dictionary: Path | None = None) -> Link:
+    """The link socket and the dictionary of a built kit build; `dictionary`
+    replaces the build's own (`boot` checks that it is the firmware's)."""
     socket_path = cache_value(build_dir, "KIT_LINK_SOCKET")
     if not socket_path:
         raise KitError(f"{build_dir} has no ground link (no KIT_LINK_SOCKET): is it a kit build of this version?")
-    dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
-    if not dictionaries:
-        raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-    return Link(build_dir, Path(socket_path), dictionaries[0], cache_value(build_dir, "KIT_BOARD_TARGET") or "")
+    if dictionary is None:
+        dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
+        if not dictionaries:
+            raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
+        dictionary = dictionaries[0]
+    elif not dictionary.is_file():
+        raise KitError(f"no dictionary at {dictionary}")
+    return Link(build_dir, Path(socket_path), dictionary, cache_value(build_dir, "KIT_BOARD_TARGET") or "")
+
+
+def boot(link: Link) -> Qemu:
+    """Boot a link's build in QEMU and wait for its LINK line; refuse a
+    dictionary that is not the one the firmware was built with (a GDS would
+    decode its packets as some other build's events and channels). On any
+    error QEMU is stopped."""
+    _check_socket_free(link.socket)
+    qemu = Qemu(link.build_dir)
+    try:
+        qemu.read_until(lambda line: line.startswith(LINK_READY) or ends_run(line), BOOT_TIMEOUT_S)
+        ready = next((line for line in qemu.lines if line.startswith(LINK_READY)), None)
+        if ready is None:
+            raise KitError(f"the firmware in {link.build_dir} did not bring its link up:\n{qemu.text()}")
+        built_with = LINK_DICTIONARY.search(ready)
+        given = dictionary_id(link.dictionary)
+        if built_with is None or built_with.group(1) != given:
+            raise KitError(
+                f"the dictionary {link.dictionary} (id {given}) is not the one the firmware in {link.build_dir} was "
+                f"built with (id {built_with.group(1) if built_with else 'not printed'}): use that build's own "
+                f"dictionary, or rebuild it (west build -d {link.build_dir})")
+    except BaseException:
+        qemu.stop()
+        raise
+    return qemu
 
 
 def scenario_of(build_dir: Path) -> str | None:
@@ -62,26 +100,47 @@ def scenario_of(build_dir: Path) -> str | None:
     return match.group(1) if match else None
 
 
-def _check_socket_free(path: Path) -> None:
-    """A live socket at the link's path means another QEMU of this build is
-    running: two would steal each other's link."""
+def socket_free(path: Path) -> bool:
+    """No QEMU listens on a link socket (a stale file is free: QEMU unlinks
+    and rebinds it)."""
     if not path.exists():
-        return
+        return True
     probe = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     try:
         probe.connect(str(path))
     except OSError:
-        return  # stale: QEMU unlinks and rebinds it
+        return True
     finally:
         probe.close()
-    raise KitError(f"the link socket {path} is in use: another QEMU of this build is running. Stop it first.")
+    return False
+
+
+def _check_socket_free(path: Path) -> None:
+    """A live socket at the link's path means another QEMU of this build is
+    running: two would steal each other's link."""
+    if not socket_free(path):
+        raise KitError(f"the link socket {path} is in use: another QEMU of this build is running. Stop it first.")
+
+
+def _check_port_free(port: int) -> None:
+    """fprime-gds's web page needs its port; taken, fprime-gds would start
+    and then fail in its log."""
+    probe = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    try:
+        probe.bind(("127.0.0.1", port))
+    except OSError as error:
+        raise KitError(f"the GDS web page's port {port} is taken ({error.strerror}): "
+                       "stop what holds it or pick another with --port") from None
+    finally:
+        probe.close()
 
 
 class GroundStation:
     """QEMU running a build, and fprime-gds connected to its link."""
 
-    def __init__(self, build_dir: Path, logs: Path, gui: bool = False, gui_port: int = 5000) -> None:
-        self.link = link_of(build_dir)
+    def __init__(self, build_dir: Path, logs: Path, gui: bool = False, gui_port: int = 5000,
+                 dictionary: Path | None = None) -> None:
+        self.link = link_of(build_dir, dictionary)
         if scenario_of(build_dir) != "ground":
             raise KitError(f"{build_dir} does not play the ground scenario (CONFIG_KIT_SCENARIO_GROUND=y): "
                            "its firmware would not wait for the ground")
@@ -114,12 +173,10 @@ class GroundStation:
         self.stop()
 
     def start(self) -> None:
-        _check_socket_free(self.link.socket)
+        if self.gui:
+            _check_port_free(self.gui_port)
         self.logs.mkdir(parents=True, exist_ok=True)
-        self.qemu = Qemu(self.link.build_dir)
-        self.qemu.read_until(lambda line: line.startswith(LINK_READY) or ends_run(line), BOOT_TIMEOUT_S)
-        if not any(line.startswith(LINK_READY) for line in self.qemu.lines):
-            raise KitError(f"the firmware in {self.link.build_dir} did not bring its link up:\n{self.qemu.text()}")
+        self.qemu = boot(self.link)
         command = [
             "fprime-gds", "--no-app", "--dictionary", str(self.link.dictionary),
             "--communication-selection", "kit-unix", "--kit-socket", str(self.link.socket),

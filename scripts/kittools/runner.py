@@ -147,9 +147,23 @@ class Qemu:
         if self._process.poll() is None:
             os.killpg(self._process.pid, signal.SIGTERM)
             self._process.wait(timeout=10)
+        _reap_group(self._process.pid)
         for pipe_fd in self._pipe_fds or ():
             os.close(pipe_fd)
         self._pipe_fds = None
+
+
+def _reap_group(group: int, timeout_s: float = 5.0) -> None:
+    """Wait until no process of a group is left: the run target's leader
+    (ninja) exits before QEMU does, and a QEMU still holding the link
+    socket would refuse the next boot."""
+    deadline = time.monotonic() + timeout_s
+    for _ in range(int(2 * timeout_s / 0.05)):  # a zombie nobody reaps must not hang us
+        try:
+            os.killpg(group, signal.SIGKILL if time.monotonic() > deadline else 0)
+        except ProcessLookupError:
+            return
+        time.sleep(0.05)
 
 
 def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:

@@ -216,9 +216,7 @@ def run(build: Path) -> Outcome:
     data = json.loads(link_info.dictionary.read_text())
     opcodes = {c["name"]: c["opcode"] for c in data["commands"]}
     outcome = Outcome()
-    with runner.Qemu(build) as qemu:
-        if not qemu.read_until(lambda line: line.startswith(ground.LINK_READY), ground.BOOT_TIMEOUT_S):
-            raise KitError(f"{build} did not bring its link up:\n{qemu.text()}")
+    with ground.boot(link_info) as qemu:
         link = Downlink(link_info.socket, link_info.dictionary)
         try:
             driver = Driver(qemu, link, opcodes)

@@ -223,9 +223,32 @@ def run_integration(log_dir: Path) -> Tally:
         print(f"[kit]   {name}: {result.passed} passed, {result.failed} failed "
               f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
         tally.add(result)
+        tally.add(foreign_dictionary_build(build, name, logs))
         tally.add(fuzz_build(build, name, logs))
         tally.add(serial_sweep_build(build, name, logs))
     return tally
+
+
+def foreign_dictionary_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build with a dictionary of another build (its own with
+    another project version, as a build of another commit has): the ground
+    tools must refuse it with their one message and leave no QEMU behind."""
+    own = ground.link_of(build).dictionary
+    foreign = logs / "foreign-dictionary.json"
+    data = json.loads(own.read_text())
+    data["metadata"]["projectVersion"] = f"{data['metadata']['projectVersion']}-another-build"
+    foreign.write_text(json.dumps(data, indent=2) + "\n")
+    link = ground.link_of(build, foreign)
+    try:
+        with ground.boot(link):
+            failure: str | None = "booted with another build's dictionary"
+    except KitError as error:
+        failure = None if "is not the one the firmware" in str(error) else f"refused for another reason: {error}"
+    if failure is None and not ground.socket_free(link.socket):
+        failure = "QEMU still holds the link socket after the refusal"
+    print(f"[kit]   {name}: another build's dictionary: {'refused' if failure is None else 'FAIL: ' + failure}",
+          flush=True)
+    return Tally(failed=1) if failure else Tally(passed=1)
 
 
 def serial_sweep_build(build: Path, name: str, logs: Path) -> Tally:
@@ -261,9 +284,7 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
     goes to fuzz.json beside the other logs."""
     link = ground.link_of(build)
     started = time.monotonic()
-    with runner.Qemu(build) as qemu:
-        if not qemu.read_until(lambda line: line.startswith(ground.LINK_READY), ground.BOOT_TIMEOUT_S):
-            raise KitError(f"{build} did not bring its link up:\n{qemu.text()}")
+    with ground.boot(link) as qemu:
 
         def halted() -> str:
             qemu.read_until(lambda line: False, 0.001)

@@ -147,3 +147,59 @@ def test_halt_lines_start_at_the_first_sign_of_a_halt():
               "PROJECT EXECUTION FAILED"]
     assert runner.halt_lines(halted).splitlines() == halted[2:]
     assert runner.halt_lines([*running, "ZEPHYR FATAL ERROR 2: Stack overflow"]).endswith("Stack overflow")
+
+
+def test_the_dictionary_id_is_the_one_the_build_compiles_in(tmp_path: Path):
+    """app/dictionary_id.cmake (compiled into the LINK line) and the ground
+    tools (which compare against it) must name a dictionary alike; the
+    header is rewritten only when the id changes."""
+    import shutil
+    import subprocess
+
+    dictionary = tmp_path / "KitTopologyDictionary.json"
+    dictionary.write_text('{"metadata": {"projectVersion": "abc"}}\n')
+    header = tmp_path / "KitDictionaryId.hpp"
+    cmake = shutil.which("cmake")
+    if cmake is None:
+        pytest.skip("cmake is not on PATH")
+
+    def generate() -> None:
+        subprocess.run([cmake, f"-DDICTIONARY={dictionary}", f"-DOUTPUT={header}", "-P",
+                        str(ground.KIT_ROOT / "app" / "dictionary_id.cmake")], check=True)
+
+    generate()
+    assert f'#define KIT_DICTIONARY_ID "{ground.dictionary_id(dictionary)}"' in header.read_text()
+    written = header.stat().st_mtime_ns
+    generate()
+    assert header.stat().st_mtime_ns == written
+    dictionary.write_text('{"metadata": {"projectVersion": "def"}}\n')
+    generate()
+    assert ground.dictionary_id(dictionary) in header.read_text()
+
+
+def test_a_dictionary_that_is_not_there_is_refused(tmp_path: Path):
+    (tmp_path / "CMakeCache.txt").write_text("KIT_LINK_SOCKET:STRING=/tmp/x.sock\n")
+    with pytest.raises(KitError, match="no dictionary at"):
+        ground.link_of(tmp_path, tmp_path / "missing.json")
+
+
+def test_a_taken_gds_port_is_refused_before_anything_starts():
+    holder = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    holder.bind(("127.0.0.1", 0))
+    holder.listen()
+    try:
+        with pytest.raises(KitError, match="port .* is taken"):
+            ground._check_port_free(holder.getsockname()[1])
+    finally:
+        holder.close()
+
+
+def test_a_link_socket_is_free_unless_something_listens(tmp_path: Path):
+    path = tmp_path / "link.sock"
+    assert ground.socket_free(path)
+    server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    server.bind(str(path))
+    server.listen()
+    assert not ground.socket_free(path)
+    server.close()
+    assert ground.socket_free(path)  # stale file: QEMU rebinds it
