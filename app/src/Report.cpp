@@ -4,11 +4,11 @@
 // \brief  The console record of a run
 // ======================================================================
 #include "app/src/Report.hpp"
+#include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "app/src/HeapMonitor.hpp"
-#include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
 
 #include <zephyr/device.h>
 #include <zephyr/devicetree.h>
@@ -146,8 +146,7 @@ void banner() {
 
 void linkReady() {
     // The dictionary id lets the ground refuse another build's dictionary
-    printk("KIT LINK ready uart=%s dictionary=%s\n", DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name,
-           KIT_DICTIONARY_ID);
+    printk("KIT LINK ready uart=%s dictionary=%s\n", DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name, KIT_DICTIONARY_ID);
 }
 
 bool commands(const Uplink::Frame* frames, FwSizeType count) {

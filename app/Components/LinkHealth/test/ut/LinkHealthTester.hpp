@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: Apache-2.0
+
+#ifndef KIT_LINKHEALTHTESTER_HPP
+#define KIT_LINKHEALTHTESTER_HPP
+
+#include "app/Components/LinkHealth/LinkHealth.hpp"
+#include "app/Components/LinkHealth/LinkHealthGTestBase.hpp"
+
+namespace Kit {
+
+class LinkHealthTester : public LinkHealthGTestBase {
+  public:
+    static const FwSizeType MAX_HISTORY_SIZE = 32;
+    static const FwEnumStoreType TEST_INSTANCE_ID = 0;
+    static constexpr U32 IN_FLIGHT = 2;
+    static constexpr FwSizeType ACCUMULATOR_SIZE = 64;
+
+    LinkHealthTester();
+    ~LinkHealthTester();
+
+    void commandsBeyondTheLimitAreDroppedAndCounted();
+    void anAnswerFreesASlotAndGoesBackToTheRouter();
+    void unknownPacketsAreCountedAndReturned();
+    void detectorCountsEveryOutcomeByReason();
+    void aLengthThatWrapsTheFrameSizeIsOversized();
+
+  private:
+    void connectPorts();
+    void initComponents();
+
+    //! Send a ground command (context: its position in the test)
+    void sendCommand(U32 context);
+
+    LinkHealth component;
+};
+
+}  // namespace Kit
+
+#endif
