@@ -5,10 +5,16 @@
 //
 // The tick ISR only counts and stamps the tick (app/src/TickClock.cpp): the
 // count is the flag. The main loop sleeps until it moves, hands the tick to
-// the rate group driver, then gives every task one slice, highest priority
-// first. Rate groups never run inside the ISR.
+// the rate group driver, then runs the tasks by the configured policy:
+//  - pass (CONFIG_KIT_BAREMETAL_POLICY_PASS): every task one slice, highest
+//    priority first (fprime-baremetal's TaskRunner::runAll);
+//  - budgeted (CONFIG_KIT_BAREMETAL_POLICY_BUDGETED): the 1 kHz group's
+//    task always, then each other task only if its anticipated slice fits
+//    before the next tick (baremetal/Os/BudgetedScheduler.hpp).
+// Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
+#include "baremetal/Os/BudgetedScheduler.hpp"
 #include "baremetal/Os/TimedTask.hpp"
 
 #include <Fw/Types/Assert.hpp>
@@ -66,6 +72,17 @@ GuardBreach runPass() {
     return checkGuard();
 }
 
+// The policy's tasks for one tick, then the stack guard
+GuardBreach runTick(U32 nextTickAt) {
+#if defined(CONFIG_KIT_BAREMETAL_POLICY_BUDGETED)
+    BudgetedScheduler::runTick(nextTickAt);
+    return checkGuard();
+#else
+    (void)nextTickAt;  // the plain pass runs everything, whatever the time left
+    return runPass();
+#endif
+}
+
 U32 mainStackUsed() {
     // Where the paint ends is the high-water mark
     const U32 size = K_KERNEL_STACK_SIZEOF(z_main_stack);
@@ -107,8 +124,8 @@ void waitForTick(U32 (*ticksFired)(), U32 handled) {
     s_idleMax = slept > s_idleMax ? slept : s_idleMax;
 }
 
-GuardBreach afterTick() {
-    return runPass();
+GuardBreach afterTick(U32 nextTickAt) {
+    return runTick(nextTickAt);
 }
 
 GuardBreach guardState() {
@@ -138,6 +155,29 @@ void prepareStacks() {
 U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {
     out[0] = {{"main", nullptr}, static_cast<U32>(K_KERNEL_STACK_SIZEOF(z_main_stack)), mainStackUsed()};
     return 1;
+}
+
+U32 schedule(ScheduleUse (&out)[MAX_CONTEXTS], GuardMargin& guard) {
+#if defined(CONFIG_KIT_BAREMETAL_POLICY_BUDGETED)
+    const FwSizeType tasks = TimedTask::taskCount();
+    FW_ASSERT(tasks <= MAX_CONTEXTS, static_cast<FwAssertArgType>(tasks));
+    for (FwSizeType i = 0; i < tasks; i++) {
+        const BudgetedScheduler::TaskStats stats = BudgetedScheduler::stats(i);
+        out[i] = {{nullptr, TimedTask::record(i).argument},
+                  stats.critical,
+                  stats.anticipatedCycles,
+                  stats.deferrals,
+                  stats.expedited,
+                  stats.late};
+    }
+    const BudgetedScheduler::GuardStats margin = BudgetedScheduler::guard();
+    guard = {margin.cycles, margin.maxCycles};
+    return static_cast<U32>(tasks);
+#else
+    (void)out;
+    guard = {0, 0};
+    return 0;  // the plain pass budgets nothing
+#endif
 }
 
 U32 cpu(CpuUse (&out)[MAX_CONTEXTS]) {

@@ -92,7 +92,8 @@ void waitForTick(U32 (*ticksFired)(), U32 handled) {
     }
 }
 
-GuardBreach afterTick() {
+GuardBreach afterTick(U32 nextTickAt) {
+    (void)nextTickAt;  // Zephyr's scheduler preempts: nothing to budget
     return {false, 0, 0};  // Zephyr's own detectors (sentinel, MPU guard) end the run themselves
 }
 
@@ -114,6 +115,12 @@ U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {
     k_thread_foreach(addStack, &table);
     FW_ASSERT(table.overflow == 0, static_cast<FwAssertArgType>(table.overflow));
     return table.count;
+}
+
+U32 schedule(ScheduleUse (&out)[MAX_CONTEXTS], GuardMargin& guard) {
+    (void)out;
+    guard = {0, 0};
+    return 0;  // Zephyr's priorities decide, nothing is budgeted
 }
 
 U32 cpu(CpuUse (&out)[MAX_CONTEXTS]) {

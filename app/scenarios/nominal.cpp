@@ -39,6 +39,7 @@ bool run(const Context& context) {
     const bool downlinked = Report::downlinkAndTicks();
     Report::stacks();
     Report::cpu(Session::cyclesOf(CONFIG_KIT_RUN_TICKS));
+    Report::schedule();
     return measured && commanded && downlinked;
 }
 

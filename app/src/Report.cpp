@@ -138,7 +138,7 @@ void banner() {
     printk(
         "KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "
         "cycles_hz=%u icount_shift=%u run_ticks=%u\n",
-        CONFIG_KIT_MODEL_NAME, CONFIG_BOARD_TARGET, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
+        CONFIG_KIT_VARIANT_NAME, CONFIG_BOARD_TARGET, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA, FPRIME_GIT_SHA,
         static_cast<unsigned>(CONFIG_KIT_TICK_HZ), static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC),
         static_cast<unsigned>(TickClock::cyclesPerSecond()), static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT),
         static_cast<unsigned>(CONFIG_KIT_RUN_TICKS));
@@ -237,6 +237,23 @@ void cpu(U64 runCycles) {
     }
 }
 
+void schedule() {
+    Variant::ScheduleUse entries[Variant::MAX_CONTEXTS];
+    Variant::GuardMargin guard = {0, 0};
+    const U32 count = Variant::schedule(entries, guard);
+    for (U32 i = 0; i < count; i++) {
+        const Variant::ScheduleUse& use = entries[i];
+        printk("KIT SCHED name=%s critical=%s anticipated=%u deferrals=%u expedited=%u late=%u\n",
+               contextName(use.context), use.critical ? "yes" : "no", static_cast<unsigned>(use.anticipatedCycles),
+               static_cast<unsigned>(use.deferrals), static_cast<unsigned>(use.expedited),
+               static_cast<unsigned>(use.late));
+    }
+    if (count > 0) {
+        printk("KIT SCHED name=guard guard=%u guard_max=%u\n", static_cast<unsigned>(guard.cycles),
+               static_cast<unsigned>(guard.maxCycles));
+    }
+}
+
 void guardBreach(const Variant::GuardBreach& breach) {
     printk("KIT FATAL stack=%s guard_word=%u address=0x%08x: stack overflow\n", contextName(Variant::currentContext()),
            static_cast<unsigned>(breach.word), static_cast<unsigned>(breach.address));
@@ -251,7 +268,7 @@ void halt(const char* reasonName, unsigned int reason, bool expected) {
 }
 
 void end(bool passed) {
-    printk("KIT END variant=%s result=%s uptime_ms=%u\n", CONFIG_KIT_MODEL_NAME, passed ? "PASS" : "FAIL",
+    printk("KIT END variant=%s result=%s uptime_ms=%u\n", CONFIG_KIT_VARIANT_NAME, passed ? "PASS" : "FAIL",
            static_cast<unsigned>(k_uptime_get_32()));
     if (!passed) {
         failureMarker();

@@ -17,7 +17,7 @@
 namespace Kit {
 namespace Report {
 
-//! The BANNER line: the model (CONFIG_KIT_MODEL_NAME), the board, the
+//! The BANNER line: the variant (CONFIG_KIT_VARIANT_NAME), the board, the
 //! commits and the timing conditions
 void banner();
 
@@ -68,6 +68,11 @@ U32 stackUsedTotal();
 //! A CPU line per execution context (thread, or cooperative task, and
 //! idle): runs, average and worst cycles per run, share of `runCycles`
 void cpu(U64 runCycles);
+
+//! A SCHED line per context of a time-budgeted policy (its anticipated
+//! slice, deferrals, expedited and late slices) and one for its guard
+//! margin; nothing for a model that does not budget its work
+void schedule();
 
 //! The name of an execution context: the active instance whose object
 //! holds its owner, else its own name

@@ -53,6 +53,7 @@ namespace {
 // until it holds at the end of a hyperperiod
 void loop(U32 ticks, bool (*until)()) {
     const U32 periodUs = 1000000u / CONFIG_KIT_TICK_HZ;
+    const U32 tickCycles = TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ;
     const U32 period = hyperperiod();
     U32 handled = 0;
     bool stop = false;
@@ -66,8 +67,11 @@ void loop(U32 ticks, bool (*until)()) {
         // behind shows up as latency and slips, never as lost cycles.
         while (!stop && handled != fired && (ticks == 0 || handled < ticks)) {
             timing.tick();
+            // The tick just handed over fired at its stamp; the next is due
+            // a period later (already past if the loop is behind)
+            const U32 nextTickAt = TickClock::stampOf(handled) + tickCycles;
             handled++;
-            haltOnBreach(Variant::afterTick());
+            haltOnBreach(Variant::afterTick(nextTickAt));
             stop = until != nullptr && (handled % period) == 0 && until();
         }
     }

@@ -51,6 +51,23 @@ struct CpuUse {
     U64 cycles;     //!< in all
 };
 
+//! How a time-budgeted cooperative policy treated one context (baremetal's
+//! budgeted policy: baremetal/Os/BudgetedScheduler.hpp)
+struct ScheduleUse {
+    Context context;
+    bool critical;          //!< cycle-locked: never deferred
+    U32 anticipatedCycles;  //!< the slice time the policy anticipates now
+    U32 deferrals;          //!< turns it did not fit before the next tick
+    U32 expedited;          //!< slices run after too many deferrals, fit or not
+    U32 late;               //!< slices that ended after the next tick was due
+};
+
+//! The policy's guard margin: now and the largest it reached
+struct GuardMargin {
+    U32 cycles;
+    U32 maxCycles;
+};
+
 //! A stack guard that lost its paint (baremetal's detector; no MPU assumed)
 struct GuardBreach {
     bool breached;
@@ -67,9 +84,11 @@ void onTickIsr();
 //! Return once `ticksFired()` has moved past `handled` (sleeping meanwhile)
 void waitForTick(U32 (*ticksFired)(), U32 handled);
 
-//! After each tick has been handed to the rate group driver; a breach
-//! means the run must stop (app/src/Session.cpp halts it)
-GuardBreach afterTick();
+//! After each tick has been handed to the rate group driver; `nextTickAt`
+//! is the cycle count the next tick is due at (a policy that budgets its
+//! work before it needs it). A breach means the run must stop
+//! (app/src/Session.cpp halts it)
+GuardBreach afterTick(U32 nextTickAt);
 
 //! After the last tick: let queued work finish before results are read
 GuardBreach drain();
@@ -87,6 +106,10 @@ U32 stacks(StackUse (&out)[MAX_CONTEXTS]);
 //! Every execution context's CPU time (threads or cooperative tasks, and
 //! idle); returns how many
 U32 cpu(CpuUse (&out)[MAX_CONTEXTS]);
+
+//! A budgeted policy's decisions per context and its guard margin; returns
+//! how many contexts (0: the model does not budget its work)
+U32 schedule(ScheduleUse (&out)[MAX_CONTEXTS], GuardMargin& guard);
 
 //! The execution context running now, for a fatal report
 Context currentContext();

@@ -14,21 +14,25 @@ namespace {
 SliceRecord s_records[TimedTask::MAX_TASKS];
 FwSizeType s_count = 0;
 
-void timedSlice(void* argument) {
-    SliceRecord& record = *static_cast<SliceRecord*>(argument);
+U32 timeSlice(SliceRecord& record) {
     const U32 begin = k_cycle_get_32();
     record.routine(record.argument);
     const U32 cycles = k_cycle_get_32() - begin;  // modulo 2^32: one wrap is fine
     record.slices++;
     record.cycles += cycles;
     record.maxCycles = cycles > record.maxCycles ? cycles : record.maxCycles;
+    return cycles;
+}
+
+void timedSlice(void* argument) {
+    (void)timeSlice(*static_cast<SliceRecord*>(argument));
 }
 }  // namespace
 
 Os::TaskInterface::Status TimedTask::start(const Arguments& arguments) {
     FW_ASSERT(s_count < MAX_TASKS, static_cast<FwAssertArgType>(s_count));  // raise MAX_TASKS with the topology
     SliceRecord& record = s_records[s_count];
-    record = {arguments.m_routine, arguments.m_routine_argument, 0, 0, 0};
+    record = {arguments.m_routine, arguments.m_routine_argument, arguments.m_priority, 0, 0, 0};
     s_count++;
     Arguments timed(arguments);
     timed.m_routine = timedSlice;
@@ -43,6 +47,11 @@ FwSizeType TimedTask::taskCount() {
 const SliceRecord& TimedTask::record(FwSizeType index) {
     FW_ASSERT(index < s_count, static_cast<FwAssertArgType>(index));
     return s_records[index];
+}
+
+U32 TimedTask::runSlice(FwSizeType index) {
+    FW_ASSERT(index < s_count, static_cast<FwAssertArgType>(index));
+    return timeSlice(s_records[index]);
 }
 
 }  // namespace Kit

@@ -18,6 +18,7 @@ namespace Kit {
 struct SliceRecord {
     Os::TaskInterface::taskRoutine routine;
     void* argument;  //!< the routine's own argument (F´'s task wrapper, inside the component)
+    FwTaskPriorityType priority;  //!< F´'s: higher is more urgent (the board's Tables.fpp)
     U32 slices;
     U64 cycles;
     U32 maxCycles;
@@ -31,6 +32,10 @@ class TimedTask final : public Os::Baremetal::BaremetalTask {
 
     static FwSizeType taskCount();
     static const SliceRecord& record(FwSizeType index);
+
+    //! Run one slice of a task directly (a policy other than the
+    //! TaskRunner's pass: baremetal/Os/BudgetedScheduler); returns its cycles
+    static U32 runSlice(FwSizeType index);
 };
 
 }  // namespace Kit

@@ -26,33 +26,49 @@ def conditions_text(data: Results) -> Text:
     return Text("Conditions", lines)
 
 
+def _against_first(values: dict[str, float], unit: str = "") -> str:
+    """Each variant's value, the others with their difference to the first."""
+    first = next(iter(values))
+    parts = []
+    for v, value in values.items():
+        if v == first:
+            parts.append(f"{v} {value:,.1f}{unit}")
+        else:
+            delta = value - values[first]
+            parts.append(f"{v} {value:,.1f}{unit} ({delta:+,.1f}{unit})")
+    return ", ".join(parts)
+
+
 def findings(data: Results) -> Text:
-    """'What the numbers say', generated from them."""
+    """'What the numbers say', generated from them: every variant, the others
+    against the first (in name order)."""
     names = data.names()
     lines: list[str] = []
-    if len(names) == 2:
-        a, b = names
-        va_, vb_ = data.variants[a], data.variants[b]
+    if len(names) >= 2:
+        first = names[0]
         for what, metric in (("ROM", model.ROM), ("static RAM", model.RAM)):
-            va, vb = va_.metric(metric), vb_.metric(metric)
-            if va and vb is not None:
-                delta = vb - va
-                more = "more" if delta >= 0 else "less"
-                lines.append(f"{b} uses {kib(abs(delta))} ({abs(delta) / va * 100:.1f}%) {more} {what} than {a} "
-                             f"({kib(vb)} vs {kib(va)}).")
-        sa, sb = va_.metric(model.STACKS_RESERVED), vb_.metric(model.STACKS_RESERVED)
-        if sa is not None and sb is not None:
-            lines.append(f"Stacks reserved: {a} {fmt(sa)} B, {b} {fmt(sb)} B.")
-        rate_groups = sorted({m.name for m in va_.metrics if m.quantity == "slips"})
+            values = {v: data.variants[v].metric(metric) for v in names}
+            base = values[first]
+            if base and all(x is not None for x in values.values()):
+                for v in names[1:]:
+                    delta = float(values[v] or 0) - base
+                    more = "more" if delta >= 0 else "less"
+                    lines.append(f"{v} uses {kib(abs(delta))} ({abs(delta) / base * 100:.1f}%) {more} {what} "
+                                 f"than {first} ({kib(values[v] or 0)} vs {kib(base)}).")
+        stacks = {v: data.variants[v].metric(model.STACKS_RESERVED) for v in names}
+        if all(x is not None for x in stacks.values()):
+            lines.append("Stacks reserved: " + ", ".join(f"{v} {fmt(x)} B" for v, x in stacks.items()) + ".")
+        rate_groups = sorted({m.name for m in data.variants[first].metrics if m.quantity == "slips"})
         for rg in rate_groups:
             p99 = model.rg_metric(rg, "latency", "p99")
-            la, lb = va_.metric(p99), vb_.metric(p99)
-            slipped = {v: data.variants[v].metric(model.slips(rg)) for v in names}
-            if la is None or lb is None:
+            latency = {v: data.variants[v].metric(p99) for v in names}
+            if any(x is None for x in latency.values()):
                 continue
-            lower = a if la <= lb else b
-            lines.append(f"{rg}: p99 dispatch latency {a} {la:.1f} µs, {b} {lb:.1f} µs: {lower} is lower by "
-                         f"{abs(la - lb):.1f} µs; slips {a} {fmt(slipped[a])}, {b} {fmt(slipped[b])}.")
+            known = {v: float(x) for v, x in latency.items() if x is not None}
+            lowest = min(known, key=lambda v: known[v])
+            slipped = ", ".join(f"{v} {fmt(data.variants[v].metric(model.slips(rg)))}" for v in names)
+            lines.append(f"{rg}: p99 dispatch latency {_against_first(known, ' µs')}: {lowest} is lowest; "
+                         f"slips {slipped}.")
         for v in names:
             idle = [r for r in data.variants[v].of_kind("CPU") if r.get("name") == "idle"]
             if idle:
@@ -135,9 +151,10 @@ def sweep_guidance(data: Results, found: dict[str, sweep.Sweep]) -> Text:
                              f"{sweep.level_text(most, unit)}{times}; "
                              f"{fastest} p99 latency stayed within {min(p99):.1f}-{max(p99):.1f} µs{grows}.")
         lines += [f"{v}: inconsistent sweep record: {text}" for text in sw.inconsistencies()]
+    lines += policy_guidance(data, found)
     names = data.names()
-    if len(names) == 2:
-        a, b = names
+    a = names[0] if names else ""
+    for b in names[1:]:
         costs = []
         for what, metric in (("ROM", model.ROM), ("static RAM", model.RAM), ("reserved stack", model.STACKS_RESERVED)):
             va, vb = data.variants[a].metric(metric), data.variants[b].metric(metric)
@@ -149,3 +166,43 @@ def sweep_guidance(data: Results, found: dict[str, sweep.Sweep]) -> Text:
         if costs:
             lines.append(f"What {b} costs against {a} at zero load: {', '.join(costs)}.")
     return Text("Background load: what the sweep says", lines)
+
+
+def policy_pairs(names: list[str]) -> list[tuple[str, str]]:
+    """(model, the same model under another policy): a variant named
+    <model>_<policy> (baremetal_budgeted) beside its model's."""
+    return [(base, v) for v in names for base in names if v.startswith(base + "_")]
+
+
+def policy_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
+    """What a policy changes against its model's plain one, per load axis in
+    µs, at the fastest rate group: where each breaks, what the policy shed
+    to get there, and where no cooperative policy can help (a slice that
+    does not fit the period)."""
+    period = fastest_period_us(data)
+    lines: list[str] = []
+    for base, policy in policy_pairs(data.names()):
+        if base not in found or policy not in found:
+            continue
+        plain, budgeted = found[base], found[policy]
+        fastest = budgeted.rate_groups()[0]
+        for axis in budgeted.axes():
+            if axis not in plain.axes():
+                continue
+            unit = budgeted.unit(axis)
+            at_plain, at_policy = plain.breaking_point(axis, fastest), budgeted.breaking_point(axis, fastest)
+            most = budgeted.max_load(axis)
+            if at_plain == at_policy:
+                moved = f"both break at {break_text(at_plain, most, unit)}"
+            else:
+                moved = (f"{policy} holds it up to {break_text(at_policy, most, unit)} where {base} breaks at "
+                         f"{break_text(at_plain, plain.max_load(axis), unit)}")
+            shed = budgeted.shed(axis, fastest, at_policy)
+            trade = (f"; to do so it shed {shed} load messages (its queue overflowed while it deferred them)"
+                     if shed else "; it shed no load")
+            limit = ""
+            if unit == "us" and period > 0 and at_policy is not None and at_policy > period:
+                limit = (f"; a slice of {period:.0f} µs or more fits no tick: a cooperative policy can only "
+                         f"postpone it, and {policy} misses deadlines from {sweep.level_text(at_policy, unit)}")
+            lines.append(f"{axis} load, {fastest}: {moved}{trade}{limit}.")
+    return lines

@@ -26,6 +26,9 @@ class Point:
     latency_p99: int
     latency_max: int
     jitter_max: int
+    #: Load messages the load's queue dropped during the segment (a policy
+    #: that defers work may shed it: CONFIG_KIT_MODEL_SHEDS_LOAD)
+    shed: int = 0
 
     @property
     def missed(self) -> bool:
@@ -59,6 +62,11 @@ class Sweep:
                 return point.level
         return None
 
+    def shed(self, axis: str, rate_group: str, below: int | None = None) -> int:
+        """Load messages dropped on an axis (counted once, on the group's
+        points), at levels below `below` if given."""
+        return sum(p.shed for p in self.series(axis, rate_group) if below is None or p.level < below)
+
     def max_load(self, axis: str) -> int:
         return max((p.level for p in self.points if p.axis == axis), default=0)
 
@@ -89,7 +97,7 @@ def of_records(records: list[dict[str, Any]]) -> Sweep | None:
     """The sweep in a variant's records, or None when it has none."""
     points = [Point(str(r["axis"]), _int(r, "level"), str(r["unit"]), _int(r, "burst"), str(r["rg"]), _int(r, "hz"),
                     _int(r, "slips"), _int(r, "late_starts"), _int(r, "latency_p99"), _int(r, "latency_max"),
-                    _int(r, "jitter_max"))
+                    _int(r, "jitter_max"), int(str(r.get("load_dropped", 0)), 0))
               for r in records if r.get("kind") == "SWEEP"]
     if not points:
         return None

@@ -72,6 +72,12 @@ def record_tables(data: Results) -> list[Table]:
                      [("name", "context"), ("runs", "runs"), ("avg", "avg"), ("max", "max"),
                       ("cpu_permille", "CPU %")]),
         record_table(data, "STACK", "Stacks (bytes)", [("name", "stack"), ("size", "size"), ("used", "used")]),
+        record_table(data, "SCHED", "The time-budgeted policy's task table (counter cycles; Betaflight's "
+                                    "scheduler table: anticipated slice, turns deferred, slices expedited after "
+                                    "waiting, slices that ended after the next tick was due; the guard margin)",
+                     [("name", "task"), ("critical", "critical"), ("anticipated", "anticipated"),
+                      ("deferrals", "deferrals"), ("expedited", "expedited"), ("late", "late"), ("guard", "guard"),
+                      ("guard_max", "guard max")]),
         record_table(data, "PROBE", "Instrumentation cost (counter cycles per rate-group cycle)",
                      [("cycles_per_cycle", "cycles")]),
     )
@@ -107,6 +113,8 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
     names = sorted(found)
     fastest = found[names[0]].rate_groups()[0]
     loads = sorted({p.level for v in names for p in found[v].points if p.axis == axis})
+    # A column of shed load messages for a variant that shed any here
+    shedding = [v for v in names if found[v].shed(axis, fastest) > 0]
     rows = []
     for load in loads:
         row: list[Any] = [load]
@@ -116,11 +124,15 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
             row += [point.latency_p99 * 1e6 / cycles_hz if point else "",
                     point.latency_max * 1e6 / cycles_hz if point else "",
                     ", ".join(rg for rg, p in at.items() if p.missed) or "-"]
+            if v in shedding:
+                row.append(point.shed if point else "")
         rows.append(row)
     unit = found[names[0]].unit(axis)
     columns = [f"load ({'µs' if unit == 'us' else unit})"]
     for v in names:
         columns += [f"{v} {fastest} p99 (µs)", f"{v} {fastest} max (µs)", f"{v} missed deadlines"]
+        if v in shedding:
+            columns.append(f"{v} load shed")
     return Table(f"Load sweep, axis '{axis}'", columns, rows)
 
 

@@ -47,7 +47,13 @@ def test_twister_files_choose_only_existing_models_and_scenarios():
             models = [c for c in configs if c.startswith("CONFIG_KIT_MODEL_")]
             assert len(models) == 1, f"{path.name} {name}: one model, got {models}"
             model = models[0].removeprefix("CONFIG_KIT_MODEL_").removesuffix("=y").lower()
-            assert model in VARIANTS and name.split(".")[-1] in (model, "load"), f"{path.name} {name}"
+            assert model in VARIANTS, f"{path.name} {name}"
+            # The variant: the model's name, or the model's with its policy
+            # (CONFIG_KIT_<MODEL>_POLICY_<POLICY>=y: baremetal_budgeted)
+            prefix = f"CONFIG_KIT_{model.upper()}_POLICY_"
+            policies = [c.removeprefix(prefix).removesuffix("=y").lower() for c in configs if c.startswith(prefix)]
+            variant = f"{model}_{policies[0]}" if policies else model
+            assert variant in name.split("."), f"{path.name} {name}: not named after its variant {variant}"
             for config in configs:
                 if config.startswith("CONFIG_KIT_SCENARIO_"):
                     scenario = config.removeprefix("CONFIG_KIT_SCENARIO_").removesuffix("=y").lower()

@@ -136,3 +136,47 @@ def test_an_axis_one_variant_did_not_run_says_so(tmp_path):
     data.variants["rtos"].records.append({"kind": record.kind, **record.fields})
     report.write(data, tmp_path)
     assert "| downlink | rg1kHz | not run | none up to 0 pkt/s |" in (tmp_path / "report.md").read_text()
+
+
+def test_a_policy_is_compared_with_its_model_and_its_shed_load_shown(tmp_path):
+    """baremetal_budgeted (the baremetal model under its time-budgeted
+    policy) beside baremetal: where each breaks, what the policy shed, and
+    where no cooperative policy can help; its SCHED table in the report."""
+    def budgeted_lines() -> list[str]:
+        lines = []
+        for point, load in enumerate(range(0, 2001, 500)):
+            for rg, hz in (("rg1kHz", 1000), ("rg100Hz", 100)):
+                missed = rg == "rg1kHz" and load >= 1500
+                shed = 4 if load >= 1000 else 0
+                lines.append(
+                    f"KIT SWEEP axis=slice point={point} level={load} unit=us burst=0 rg={rg} hz={hz} cycles=200 "
+                    f"expected=200 slips={3 if missed else 0} late_starts=0 latency_p99={70 * CYCLES_PER_US} "
+                    f"latency_max={80 * CYCLES_PER_US} jitter_p99=12 jitter_max=24 exec_max=200 "
+                    f"load_runs=20 load_dropped={shed}")
+        return lines + ["KIT BREAK axis=slice rg=rg1kHz level=1500 unit=us",
+                        "KIT BREAK axis=slice rg=rg100Hz level=none unit=us",
+                        "KIT SCHED name=load critical=no anticipated=12000 deferrals=40 expedited=3 late=2",
+                        "KIT SCHED name=rg1kHz critical=yes anticipated=900 deferrals=0 expedited=0 late=0",
+                        "KIT SCHED name=guard guard=120 guard_max=1200"]
+
+    data = results()
+    text = console_log("baremetal_budgeted") + "\n" + "\n".join(budgeted_lines())
+    data.variants["baremetal_budgeted"] = compare.results(
+        [compare.VariantData("baremetal_budgeted", Footprint(96400, 30100, 262144, 65536), console.parse(text))]
+    ).variants["baremetal_budgeted"]
+    found = analysis.sweeps(data)
+    assert found["baremetal_budgeted"].shed("slice", "rg1kHz") == 12
+    assert found["baremetal_budgeted"].shed("slice", "rg1kHz", below=1500) == 4
+    assert analysis.policy_pairs(data.names()) == [("baremetal", "baremetal_budgeted")]
+    lines = analysis.sweep_guidance(data, found).lines
+    assert ("slice load, rg1kHz: baremetal_budgeted holds it up to 1500 µs where baremetal breaks at 1000 µs; "
+            "to do so it shed 4 load messages (its queue overflowed while it deferred them); a slice of 1000 µs "
+            "or more fits no tick: a cooperative policy can only postpone it, and baremetal_budgeted misses "
+            "deadlines from 1500 µs.") in lines
+    findings = analysis.findings(data).lines
+    assert any(line.startswith("baremetal_budgeted uses") for line in findings)
+    assert any("rtos" in line and "baremetal_budgeted" in line and line.startswith("rg1kHz:") for line in findings)
+    report.write(data, tmp_path)
+    markdown = (tmp_path / "report.md").read_text()
+    assert "baremetal_budgeted load shed" in markdown
+    assert "| baremetal_budgeted | load | no | 12,000 | 40 | 3 | 2 |" in markdown
