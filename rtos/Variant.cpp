@@ -93,7 +93,7 @@ void waitForTick(U32 (*ticksFired)(), U32 handled) {
 }
 
 GuardBreach afterTick(U32 nextTickAt) {
-    (void)nextTickAt;  // Zephyr's scheduler preempts: nothing to budget
+    (void)nextTickAt;      // Zephyr's scheduler preempts: nothing to budget
     return {false, 0, 0};  // Zephyr's own detectors (sentinel, MPU guard) end the run themselves
 }
 

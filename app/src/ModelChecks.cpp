@@ -64,6 +64,19 @@ static_assert(largestStack() <= CONFIG_DYNAMIC_THREAD_STACK_SIZE,
 // Every active instance is one task of the TaskRunner's fixed table
 static_assert(ACTIVE_INSTANCE_COUNT <= Os::Baremetal::TASK_CAPACITY,
               "more active instances than fprime-baremetal's TaskRunner holds (TASK_CAPACITY)");
+#if defined(CONFIG_KIT_BAREMETAL_POLICY_BUDGETED)
+// The budgeted policy never defers a task of at least this priority: the
+// rate groups, the dispatcher (its queue asserts when full) and the
+// downlink (Betaflight's serial task) must be among them, the background
+// load (what the policy is for) must not
+static_assert(static_cast<int>(Priorities::rg10Hz) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
+                  static_cast<int>(Priorities::cmdDisp) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
+                  static_cast<int>(Priorities::comQueue) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY,
+              "CONFIG_KIT_BUDGET_CRITICAL_PRIORITY would let the budgeted policy defer a rate group, the "
+              "dispatcher or the downlink (boards/<board>/Tables.fpp)");
+static_assert(static_cast<int>(Priorities::load) < CONFIG_KIT_BUDGET_CRITICAL_PRIORITY,
+              "CONFIG_KIT_BUDGET_CRITICAL_PRIORITY leaves the background load cycle-locked: nothing to budget");
+#endif
 #endif
 
 }  // namespace

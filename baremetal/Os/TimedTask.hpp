@@ -17,7 +17,7 @@ namespace Kit {
 //! What one cooperative task's slices cost
 struct SliceRecord {
     Os::TaskInterface::taskRoutine routine;
-    void* argument;  //!< the routine's own argument (F´'s task wrapper, inside the component)
+    void* argument;               //!< the routine's own argument (F´'s task wrapper, inside the component)
     FwTaskPriorityType priority;  //!< F´'s: higher is more urgent (the board's Tables.fpp)
     U32 slices;
     U64 cycles;

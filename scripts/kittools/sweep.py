@@ -41,6 +41,9 @@ class Sweep:
     points: list[Point]
     #: (axis, rate group) -> the firmware's own breaking point (µs, None: none)
     reported: dict[tuple[str, str], int | None]
+    #: SWEEP records cut short (an interrupt's console message, such as the
+    #: UART driver's overrun line, printed into the middle of one)
+    malformed: int = 0
 
     def axes(self) -> list[str]:
         return list(dict.fromkeys(p.axis for p in self.points))
@@ -71,8 +74,9 @@ class Sweep:
         return max((p.level for p in self.points if p.axis == axis), default=0)
 
     def inconsistencies(self) -> list[str]:
-        """Where the firmware's BREAK line and its SWEEP points disagree."""
-        found = []
+        """Where the firmware's BREAK line and its SWEEP points disagree, and
+        records that could not be read."""
+        found = [f"{self.malformed} SWEEP record(s) cut short, left out"] if self.malformed else []
         for (axis, rg), reported in sorted(self.reported.items()):
             computed = self.breaking_point(axis, rg)
             if computed != reported:
@@ -93,12 +97,19 @@ def _int(record: dict[str, Any], key: str) -> int:
     return int(str(record[key]), 0)
 
 
+#: What a SWEEP record must hold to be read
+SWEEP_FIELDS = ("axis", "level", "unit", "burst", "rg", "hz", "slips", "late_starts", "latency_p99", "latency_max",
+                "jitter_max")
+
+
 def of_records(records: list[dict[str, Any]]) -> Sweep | None:
     """The sweep in a variant's records, or None when it has none."""
+    sweeps = [r for r in records if r.get("kind") == "SWEEP"]
+    whole = [r for r in sweeps if all(key in r for key in SWEEP_FIELDS)]
     points = [Point(str(r["axis"]), _int(r, "level"), str(r["unit"]), _int(r, "burst"), str(r["rg"]), _int(r, "hz"),
                     _int(r, "slips"), _int(r, "late_starts"), _int(r, "latency_p99"), _int(r, "latency_max"),
                     _int(r, "jitter_max"), int(str(r.get("load_dropped", 0)), 0))
-              for r in records if r.get("kind") == "SWEEP"]
+              for r in whole]
     if not points:
         return None
     reported: dict[tuple[str, str], int | None] = {}
@@ -106,4 +117,4 @@ def of_records(records: list[dict[str, Any]]) -> Sweep | None:
         if r.get("kind") == "BREAK":
             value = str(r["level"])
             reported[(str(r["axis"]), str(r["rg"]))] = None if value == "none" else int(value)
-    return Sweep(points, reported)
+    return Sweep(points, reported, len(sweeps) - len(whole))

@@ -180,3 +180,17 @@ def test_a_policy_is_compared_with_its_model_and_its_shed_load_shown(tmp_path):
     markdown = (tmp_path / "report.md").read_text()
     assert "baremetal_budgeted load shed" in markdown
     assert "| baremetal_budgeted | load | no | 12,000 | 40 | 3 | 2 |" in markdown
+
+
+def test_a_sweep_record_cut_short_is_left_out_and_said():
+    """An interrupt's console line (the UART driver's overrun message) can
+    land inside a SWEEP line; the rest of the sweep still reads."""
+    data = results()
+    cut = console.parse_line("KIT SWEEP axis=slice point=9 level=2500 unit=us burst=0 rg=rg1kHz hz=1000 cycles=200 "
+                             "expected=200 slips=0 late_starts=0 latency_p99=720 latency_max=900 jitter_pUART buffer "
+                             "overrun")
+    assert cut is not None
+    data.variants["rtos"].records.append({"kind": cut.kind, **cut.fields})
+    parsed = sweep.of_records(data.variants["rtos"].records)
+    assert parsed is not None and parsed.max_load("slice") == 2000
+    assert parsed.inconsistencies() == ["1 SWEEP record(s) cut short, left out"]
