@@ -192,14 +192,19 @@ def policy_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
             unit = budgeted.unit(axis)
             at_plain, at_policy = plain.breaking_point(axis, fastest), budgeted.breaking_point(axis, fastest)
             most = budgeted.max_load(axis)
-            if at_plain == at_policy:
-                moved = f"both break at {break_text(at_plain, most, unit)}"
+            if at_plain == at_policy and at_plain is None:
+                moved = f"neither misses a deadline up to {sweep.level_text(most, unit)}"
+            elif at_plain == at_policy:
+                moved = f"both break at {sweep.level_text(at_plain, unit)}"
             else:
                 moved = (f"{policy} holds it up to {break_text(at_policy, most, unit)} where {base} breaks at "
                          f"{break_text(at_plain, plain.max_load(axis), unit)}")
             shed = budgeted.shed(axis, fastest, at_policy)
-            trade = (f"; to do so it shed {shed} load messages (its queue overflowed while it deferred them)"
-                     if shed else "; it shed no load")
+            trade = ""
+            if shed:
+                trade = f"; to do so it shed {shed} load messages (its queue overflowed while it deferred them)"
+            elif at_plain != at_policy:
+                trade = "; it shed no load"
             limit = ""
             if unit == "us" and period > 0 and at_policy is not None and at_policy > period:
                 limit = (f"; a slice of {period:.0f} µs or more fits no tick: a cooperative policy can only "

@@ -113,7 +113,8 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
     names = sorted(found)
     fastest = found[names[0]].rate_groups()[0]
     loads = sorted({p.level for v in names for p in found[v].points if p.axis == axis})
-    # A column of shed load messages for a variant that shed any here
+    # A column of dropped load messages for a variant that dropped any here
+    # (a policy that sheds load by design, or an overloaded queue)
     shedding = [v for v in names if found[v].shed(axis, fastest) > 0]
     rows = []
     for load in loads:
@@ -132,7 +133,7 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
     for v in names:
         columns += [f"{v} {fastest} p99 (µs)", f"{v} {fastest} max (µs)", f"{v} missed deadlines"]
         if v in shedding:
-            columns.append(f"{v} load shed")
+            columns.append(f"{v} load dropped")
     return Table(f"Load sweep, axis '{axis}'", columns, rows)
 
 

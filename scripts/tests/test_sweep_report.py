@@ -178,7 +178,7 @@ def test_a_policy_is_compared_with_its_model_and_its_shed_load_shown(tmp_path):
     assert any("rtos" in line and "baremetal_budgeted" in line and line.startswith("rg1kHz:") for line in findings)
     report.write(data, tmp_path)
     markdown = (tmp_path / "report.md").read_text()
-    assert "baremetal_budgeted load shed" in markdown
+    assert "baremetal_budgeted load dropped" in markdown
     assert "| baremetal_budgeted | load | no | 12,000 | 40 | 3 | 2 |" in markdown
 
 
