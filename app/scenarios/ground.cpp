@@ -50,6 +50,11 @@ bool run(const Context& context) {
     for (;;) {
         Session::serve(segmentRequested);
         const Timing::Segment segment = timing.takeSegment();
+        // One more hyperperiod before the segment: the request's own
+        // dispatch and events (queued at whatever phase the ground's bytes
+        // arrived) drain there, so the segment starts from the load's
+        // periodic state, not from the request's leftovers
+        Session::run(Session::hyperperiod());
         Session::nextSegment();
         Report::SweepPoint point = pointOf(segment);
         const U32 processedBefore = load.processed();

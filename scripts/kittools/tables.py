@@ -73,8 +73,9 @@ def record_tables(data: Results) -> list[Table]:
                       ("cpu_permille", "CPU %")]),
         record_table(data, "STACK", "Stacks (bytes)", [("name", "stack"), ("size", "size"), ("used", "used")]),
         record_table(data, "SCHED", "The time-budgeted policy's task table (counter cycles; Betaflight's "
-                                    "scheduler table: anticipated slice, turns deferred, slices expedited after "
-                                    "waiting, slices that ended after the next tick was due; the guard margin)",
+                                    "scheduler table: anticipated slice, turns deferred, slices run on an open tick "
+                                    "though they did not fit, slices that ended after the next tick was due; the "
+                                    "guard margin)",
                      [("name", "task"), ("critical", "critical"), ("anticipated", "anticipated"),
                       ("deferrals", "deferrals"), ("expedited", "expedited"), ("late", "late"), ("guard", "guard"),
                       ("guard_max", "guard max")]),
