@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from . import model
+from . import model, symbols
 from .model import MetricId, Results
 
 
@@ -54,6 +54,10 @@ class Change:
 class Verdict:
     changes: list[Change] = field(default_factory=list)
     violations: list[str] = field(default_factory=list)
+    #: (variant, its symbols' diff against the baseline) where its ROM or RAM changed
+    sizes: list[tuple[str, symbols.SizeDiff]] = field(default_factory=list)
+    #: variants whose ROM or RAM broke the budget
+    over_size: set[str] = field(default_factory=set)
 
     @property
     def passed(self) -> bool:
@@ -96,6 +100,15 @@ def check(data: Results, baseline: Results, budget: Budget | None = None) -> Ver
             why = judge(metric, before, now, budget)
             if why:
                 verdict.violations.append(f"{name} {metric.label}: {_fmt(before)} -> {_fmt(now)}, {why}")
+                if metric in (model.ROM, model.RAM):
+                    verdict.over_size.add(name)
             if now != before or why:
                 verdict.changes.append(Change(name, metric, before, now, why))
+        # Which symbols moved: both tables floored alike (kittools.symbols)
+        for kind in symbols.KINDS:
+            table_now, table_before = data.variants[name].symbols.get(kind), old.symbols.get(kind)
+            if table_now and table_before:
+                sizes = symbols.diff(table_before, table_now, kind)
+                if sizes.changed:
+                    verdict.sizes.append((name, sizes))
     return verdict

@@ -6,6 +6,7 @@
   kit test      twister suite under QEMU, determinism, budget, ground-link integration, host and tooling tests
   kit gds       boot a board and model under QEMU with fprime-gds on its ground link
   kit serial-sweep  the serial-load sweep of a board and model through its ground link
+  kit sizediff  symbols added, removed, grown and shrunk between two builds (or a results file and its baseline)
   kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
 """
 
@@ -19,7 +20,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, ground, report, results, serial_sweep, style, sweep, testing
+from . import budget, ground, report, results, serial_sweep, style, sweep, symbols, testing
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant
 
@@ -162,6 +163,38 @@ def cmd_serial_sweep(args: argparse.Namespace) -> int:
     return 0
 
 
+def _symbol_tables(source: Path, variant: str | None) -> dict[str, dict[str, int]]:
+    """A build folder's full symbol tables, or a variant's (floored) from a results file or baseline."""
+    if source.is_dir():
+        return symbols.of_build(source)
+    data = results.load(source)
+    names = [variant] if variant else data.names()
+    if len(names) != 1 or names[0] not in data.variants:
+        raise KitError(f"{source} holds the variants {', '.join(data.names())}: name one with --variant")
+    tables = data.variants[names[0]].symbols
+    if not tables:
+        raise KitError(f"{source}: variant {names[0]} has no symbol tables (written by a kit before they existed)")
+    return tables
+
+
+def cmd_sizediff(args: argparse.Namespace) -> int:
+    before, now = Path(args.before).resolve(), Path(args.now).resolve()
+    if before.is_dir() != now.is_dir():
+        # A results file keeps only symbols of SYMBOL_FLOOR bytes or more: floor the build's alike
+        build = before if before.is_dir() else now
+        floored = symbols.of_build(build, symbols.SYMBOL_FLOOR)
+        tables = (floored, _symbol_tables(now, args.variant)) if before.is_dir() \
+            else (_symbol_tables(before, args.variant), floored)
+    else:
+        tables = (_symbol_tables(before, args.variant), _symbol_tables(now, args.variant))
+    for kind in args.kind or symbols.KINDS:
+        for line in symbols.render(symbols.diff(tables[0].get(kind, {}), tables[1].get(kind, {}), kind),
+                                   None if args.all else args.limit):
+            print(line)
+        print()
+    return 0
+
+
 def cmd_new_board(args: argparse.Namespace) -> int:
     # Only Zephyr's board tree is needed (new_board says so if it is missing):
     # no F´ checkout, so a port can be scaffolded before the rest is fetched
@@ -207,6 +240,15 @@ def parser() -> argparse.ArgumentParser:
     w.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
     w.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
     w.set_defaults(func=cmd_serial_sweep)
+    d = sub.add_parser("sizediff", help="symbols added, removed, grown and shrunk between two builds (as "
+                                        "bloat-o-meter): build folders, or results files / baselines")
+    d.add_argument("before", help="build folder, results file or baseline (tests/baselines/<board>.json)")
+    d.add_argument("now", help="build folder, results file or baseline")
+    d.add_argument("--variant", help="the variant to take from a results file that holds several")
+    d.add_argument("--kind", action="append", choices=symbols.KINDS, help="rom or ram (default: both)")
+    d.add_argument("--limit", type=int, default=40, help="symbols shown per kind, largest change first (default 40)")
+    d.add_argument("--all", action="store_true", help="every changed symbol")
+    d.set_defaults(func=cmd_sizediff)
     n = sub.add_parser("new-board", help="scaffold boards/<board>/ for a new board and add it to the suite")
     n.add_argument("board", metavar="BOARD", help="board target as west build -b takes it (e.g. mps2/an385)")
     n.add_argument("--from", "--reference", dest="reference", metavar="REFERENCE", default=REFERENCE_BOARD,

@@ -22,6 +22,7 @@ class VariantData:
     rom_modules: dict[str, int] = field(default_factory=dict)
     ram_modules: dict[str, int] = field(default_factory=dict)
     build: dict[str, object] = field(default_factory=dict)  # conditions.read()
+    symbols: dict[str, dict[str, int]] = field(default_factory=dict)  # kittools.symbols, floored
 
 
 def _us(cycles: int, cycles_hz: int) -> float:
@@ -73,6 +74,7 @@ def results(found: list[VariantData]) -> model.Results:
             records=[{"kind": r.kind, **r.fields} for r in d.run.records],
             build=dict(d.build), modules={"rom": d.rom_modules, "ram": d.ram_modules},
             footprint={"rom": d.footprint.rom, "ram": d.footprint.ram,
-                       "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size})
+                       "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size},
+            symbols=d.symbols)
         for d in found
     })

@@ -116,6 +116,8 @@ class Variant:
     build: dict[str, Any] = field(default_factory=dict)
     modules: dict[str, dict[str, int]] = field(default_factory=dict)
     footprint: dict[str, int] = field(default_factory=dict)
+    #: rom/ram -> symbol -> bytes (kittools.symbols; smaller symbols summed per layer)
+    symbols: dict[str, dict[str, int]] = field(default_factory=dict)
 
     def metric(self, metric: MetricId) -> float | None:
         value = self.metrics.get(metric)
@@ -138,6 +140,8 @@ class Variant:
     def to_json(self, with_records: bool = True) -> dict[str, Any]:
         out: dict[str, Any] = {"passed": self.passed, "build": self.build, "modules": self.modules,
                                "footprint": self.footprint, "metrics": {m.key: v for m, v in self.metrics.items()}}
+        if self.symbols:
+            out["symbols"] = self.symbols
         if with_records:
             out["records"] = self.records
         return out
@@ -179,7 +183,9 @@ class Results:
                 metrics={MetricId.parse(k): value for k, value in v["metrics"].items()},
                 records=[{k: str(x) for k, x in r.items()} for r in v.get("records") or []],
                 build=dict(v.get("build") or {}), modules=dict(v.get("modules") or {}),
-                footprint=dict(v.get("footprint") or {}))
+                footprint=dict(v.get("footprint") or {}),
+                symbols={kind: {str(k): int(n) for k, n in table.items()}
+                         for kind, table in (v.get("symbols") or {}).items()})
         return cls({k: str(x) for k, x in data["conditions"].items()}, variants)
 
 

@@ -10,7 +10,7 @@ import json
 from pathlib import Path
 from typing import Any
 
-from . import compare, conditions, console, model, modules, serial_sweep
+from . import compare, conditions, console, model, modules, serial_sweep, symbols
 from .footprint import measure
 from .workspace import KitError
 
@@ -126,9 +126,11 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
         if serial is not None and serial.is_file():
             run.records += serial_sweep.records_of(serial)
         build = twister_build(twister_out, suite["platform"], scenario)
-        found.append(compare.VariantData(run.variant, measure(build), run,
-                                         modules.breakdown(modules.report(build, "rom")),
-                                         modules.breakdown(modules.report(build, "ram")), conditions.read(build)))
+        rom, ram = modules.report(build, "rom"), modules.report(build, "ram")
+        found.append(compare.VariantData(
+            run.variant, measure(build), run, modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
+            {kind: symbols.table(symbols.leaves(report), symbols.SYMBOL_FLOOR)
+             for kind, report in (("rom", rom), ("ram", ram))}))
     if not found:
         raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario for {board}")
     found.sort(key=lambda d: d.variant)

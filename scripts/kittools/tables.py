@@ -5,11 +5,14 @@ from __future__ import annotations
 
 from typing import Any
 
-from . import model, sweep
+from . import model, sweep, symbols
 from .analysis import break_text, sweeps
 from .budget import Budget, Verdict
 from .document import Table, Text
 from .model import Results
+
+#: Symbols shown per variant and kind in the report's size diff (largest changes)
+SYMBOL_ROWS = 25
 
 #: The metrics of the boards-side-by-side table, before every rate group's p99 latency and slips
 BOARD_METRICS = (model.ROM, model.RAM, model.STACKS_RESERVED, model.STACKS_USED, model.HEAP_FPRIME_PEAK)
@@ -92,9 +95,19 @@ def budget_sections(verdict: Verdict, budget: Budget) -> list[Table | Text]:
     rows: list[list[Any]] = [[c.variant, c.metric.label, c.before, c.now, c.delta,
                               f"{c.pct:+.1f}%" if c.pct != float("inf") else "new", c.verdict]
                              for c in verdict.changes]
-    return [Text("Budget", text),
-            Table("Against the baseline (changed metrics)",
-                  ["variant", "metric", "baseline", "now", "delta", "change", "budget"], rows)]
+    sections: list[Table | Text] = [
+        Text("Budget", text),
+        Table("Against the baseline (changed metrics)",
+              ["variant", "metric", "baseline", "now", "delta", "change", "budget"], rows)]
+    for variant, sizes in verdict.sizes:
+        changed = sizes.rows()
+        names = symbols.demangle(d.key for d in changed[:SYMBOL_ROWS])
+        sections.append(Table(
+            f"{variant}: {sizes.kind.upper()} symbols against the baseline ({sizes.summary()}; symbols under "
+            f"{symbols.SYMBOL_FLOOR} B summed per layer)",
+            ["symbol", "baseline", "now", "delta"],
+            [[names[d.key], d.before, d.now, d.delta] for d in changed[:SYMBOL_ROWS]]))
+    return sections
 
 
 def breaking_points_table(found: dict[str, sweep.Sweep]) -> Table:

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, fuzz, ground, results, runner, serial_sweep, sweep
+from . import budget, console, fuzz, ground, results, runner, serial_sweep, sweep, symbols
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
@@ -337,6 +337,10 @@ def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseli
     verdict = budget.check(data, baseline, limits)
     for violation in verdict.violations:
         print(f"[kit]   budget: {violation}", flush=True)
+    for variant, sizes in verdict.sizes:
+        if variant in verdict.over_size:  # a failed size budget says which symbols grew
+            for line in symbols.render(sizes, limit=15):
+                print(f"[kit]   {variant}: {line}", flush=True)
     tally = Tally(passed=1) if verdict.passed else Tally(failed=1)
     # The report is for the reader; the verdict above does not depend on it
     from . import report
