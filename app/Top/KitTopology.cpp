@@ -21,10 +21,10 @@ const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
 };
 
 const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
-    {"rg1kHz", &rg1kHz, sizeof(rg1kHz)}, {"rg100Hz", &rg100Hz, sizeof(rg100Hz)},
-    {"rg10Hz", &rg10Hz, sizeof(rg10Hz)}, {"cmdDisp", &cmdDisp, sizeof(cmdDisp)},
-    {"events", &events, sizeof(events)}, {"tlmSend", &tlmSend, sizeof(tlmSend)},
-    {"load", &load, sizeof(load)},       {"comQueue", &comQueue, sizeof(comQueue)},
+    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz}, {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
+    {"rg10Hz", &rg10Hz, sizeof(rg10Hz), &rg10Hz}, {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},
+    {"events", &events, sizeof(events), &events}, {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},
+    {"load", &load, sizeof(load), &load},         {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
 };
 
 const char* activeInstanceHolding(const void* address) {
@@ -36,6 +36,26 @@ const char* activeInstanceHolding(const void* address) {
         }
     }
     return nullptr;
+}
+
+namespace {
+
+// F´ keeps a component's message queue protected
+// (Fw::QueuedComponentBase::m_queue) and has no accessor for it; a member
+// pointer formed in a derived class's scope reads it, without changing F´.
+// Never instantiated.
+struct QueueOf : Fw::QueuedComponentBase {
+    static const Os::Queue& of(const Fw::QueuedComponentBase& component) { return component.*(&QueueOf::m_queue); }
+};
+
+}  // namespace
+
+QueueUse queueUse(const ActiveInstance& instance) {
+    FW_ASSERT(instance.component != nullptr);
+    const Os::Queue& queue = QueueOf::of(*instance.component);
+    // Os::Generic::PriorityQueue (both models) keeps, per slot, the message
+    // and two FwSizeType words (its index and the message's size)
+    return {queue.getDepth(), queue.getMessageSize() + 2 * sizeof(FwSizeType), queue.getMessageHighWaterMark()};
 }
 
 namespace {

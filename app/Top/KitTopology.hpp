@@ -19,12 +19,22 @@ struct ActiveInstance {
     const char* name;
     const void* object;  //!< the instance; its task's entry argument lies inside it
     FwSizeType size;
+    const Fw::QueuedComponentBase* component;  //!< the same instance, as the owner of its message queue
 };
 constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 8;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr
 const char* activeInstanceHolding(const void* address);
+
+//! An active instance's message queue: its depth, the bytes one message
+//! slot takes, and the most messages it has held at once
+struct QueueUse {
+    FwSizeType depth;
+    FwSizeType slotBytes;
+    FwSizeType highWater;
+};
+QueueUse queueUse(const ActiveInstance& instance);
 
 //! Instantiate, wire, configure and start the deployment (tasks included)
 void setupTopology(const TopologyState& state);

@@ -1,7 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // TlmChan keeps two copies (double buffer) of a hash table of telemetry
-// entries. F´'s default (500 buckets) is about half a megabyte; the kit has
-// fewer than 32 channels, and the bucket count must cover all of them.
+// entries. F´'s default (500 buckets) is about half a megabyte. A bucket is
+// taken the first time a channel is written and never given back, and TlmChan
+// asserts when it needs one more than it has: the bucket count must cover
+// every channel of the dictionary. The kit has 36 (the ground link's brought
+// it past the 32 this once held, unnoticed until the sizing advice counted
+// them); `scripts/kit test` fails when a build's dictionary outgrows it
+// (kittools.sizing). The slots only spread the search: fewer than the
+// components with channels (13) costs time, not correctness.
 #ifndef TLMCHANIMPLCFG_HPP_
 #define TLMCHANIMPLCFG_HPP_
 
@@ -9,7 +15,7 @@ namespace {
 enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
-    TLMCHAN_HASH_BUCKETS = 32        //!< Buckets: at least the number of channels
+    TLMCHAN_HASH_BUCKETS = 36        //!< Buckets: at least the number of channels
 };
 }
 

@@ -94,6 +94,7 @@ bool run(const Context& context) {
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
     Report::stacks();
+    Report::queues();
     // Every fault detected and reported, nothing lost
     const bool detected = invalidEvents >= 1 && malformedEvents >= 2 && opcodeErrorEvents >= 2 && slips >= 1 &&
                           slipEvents >= 1 && load.dropped() > 0 && dropEvents >= 1;

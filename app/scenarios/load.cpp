@@ -130,6 +130,7 @@ bool run(const Context& context) {
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
     Report::stacks();
+    Report::queues();
     Report::schedule();
     // Where the model is expected to hold its deadlines on this board
     // (CONFIG_KIT_DEADLINES_EXPECTED), no group may miss one at zero load

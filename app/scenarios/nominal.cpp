@@ -38,6 +38,7 @@ bool run(const Context& context) {
     const bool commanded = Report::commands(s_script, SCRIPT_FRAMES);
     const bool downlinked = Report::downlinkAndTicks();
     Report::stacks();
+    Report::queues();
     Report::cpu(Session::cyclesOf(CONFIG_KIT_RUN_TICKS));
     Report::schedule();
     return measured && commanded && downlinked;

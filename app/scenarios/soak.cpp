@@ -60,6 +60,7 @@ bool run(const Context& context) {
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
     Report::stacks();
+    Report::queues();
     return passed && heapOk && downlinked;
 }
 

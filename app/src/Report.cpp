@@ -215,6 +215,15 @@ void stacks() {
     }
 }
 
+void queues() {
+    for (const ActiveInstance& instance : ACTIVE_INSTANCES) {
+        const QueueUse use = queueUse(instance);
+        printk("KIT QUEUE name=%s depth=%u slot_bytes=%u high_water=%u\n", instance.name,
+               static_cast<unsigned>(use.depth), static_cast<unsigned>(use.slotBytes),
+               static_cast<unsigned>(use.highWater));
+    }
+}
+
 U32 stackUsedTotal() {
     Variant::StackUse entries[Variant::MAX_CONTEXTS];
     const U32 count = Variant::stacks(entries);

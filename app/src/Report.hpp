@@ -62,6 +62,10 @@ bool downlinkAndTicks();
 //! A STACK line per stack of the model, with its high-water mark
 void stacks();
 
+//! A QUEUE line per active instance: its message queue's depth, bytes per
+//! slot and high-water mark
+void queues();
+
 //! The model's stacks' high-water marks added up, in bytes
 U32 stackUsedTotal();
 

@@ -7,6 +7,7 @@
   kit gds       boot a board and model under QEMU with fprime-gds on its ground link
   kit serial-sweep  the serial-load sweep of a board and model through its ground link
   kit sizediff  symbols added, removed, grown and shrunk between two builds (or a results file and its baseline)
+  kit sizing    a build's fixed tables against its dictionary and run, and what its ports cost
   kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
 """
 
@@ -20,7 +21,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, ground, report, results, serial_sweep, style, sweep, symbols, testing
+from . import budget, console, ground, report, results, serial_sweep, sizing, style, sweep, symbols, testing
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant
 
@@ -195,6 +196,25 @@ def cmd_sizediff(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_sizing(args: argparse.Namespace) -> int:
+    build = Path(args.build).resolve()
+    queues: list[dict[str, str]] = []
+    if args.log:
+        log = Path(args.log)
+        if not log.is_file():
+            raise KitError(f"no console log at {log}")
+        queues = [r.fields for r in console.parse(log.read_text()).of_kind("QUEUE")]
+        if not queues:
+            raise KitError(f"{log} has no KIT QUEUE lines (a nominal, load, faults or soak run prints them)")
+    found = sizing.measure(build, queues)
+    for line in sizing.render(found):
+        print(line)
+    faults = sizing.too_small(found.advice)
+    for fault in faults:
+        print(f"kit: TOO SMALL: {fault}", file=sys.stderr)
+    return 1 if faults else 0
+
+
 def cmd_new_board(args: argparse.Namespace) -> int:
     # Only Zephyr's board tree is needed (new_board says so if it is missing):
     # no F´ checkout, so a port can be scaffolded before the rest is fetched
@@ -249,6 +269,11 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--limit", type=int, default=40, help="symbols shown per kind, largest change first (default 40)")
     d.add_argument("--all", action="store_true", help="every changed symbol")
     d.set_defaults(func=cmd_sizediff)
+    z = sub.add_parser("sizing", help="a build's fixed tables (command dispatch, telemetry, TaskRunner, thread "
+                                      "pool, queues) against what its dictionary and run need, and its ports")
+    z.add_argument("build", help="a kit build folder (west build -d ...)")
+    z.add_argument("--log", help="the console log of a run of that build, for its queues' high-water marks")
+    z.set_defaults(func=cmd_sizing)
     n = sub.add_parser("new-board", help="scaffold boards/<board>/ for a new board and add it to the suite")
     n.add_argument("board", metavar="BOARD", help="board target as west build -b takes it (e.g. mps2/an385)")
     n.add_argument("--from", "--reference", dest="reference", metavar="REFERENCE", default=REFERENCE_BOARD,

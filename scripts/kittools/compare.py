@@ -23,6 +23,7 @@ class VariantData:
     ram_modules: dict[str, int] = field(default_factory=dict)
     build: dict[str, object] = field(default_factory=dict)  # conditions.read()
     symbols: dict[str, dict[str, int]] = field(default_factory=dict)  # kittools.symbols, floored
+    sizing: dict[str, object] = field(default_factory=dict)  # kittools.sizing, as JSON
 
 
 def _us(cycles: int, cycles_hz: int) -> float:
@@ -75,6 +76,6 @@ def results(found: list[VariantData]) -> model.Results:
             build=dict(d.build), modules={"rom": d.rom_modules, "ram": d.ram_modules},
             footprint={"rom": d.footprint.rom, "ram": d.footprint.ram,
                        "rom_size": d.footprint.rom_size, "ram_size": d.footprint.ram_size},
-            symbols=d.symbols)
+            symbols=d.symbols, sizing=dict(d.sizing))
         for d in found
     })

@@ -25,7 +25,8 @@ class Footprint:
     ram_size: int
 
 
-def _kconfig(dotconfig: Path) -> dict[str, str]:
+def kconfig(dotconfig: Path) -> dict[str, str]:
+    """A build's .config as symbol -> value (quotes stripped)."""
     values: dict[str, str] = {}
     for line in dotconfig.read_text().splitlines():
         if line.startswith("CONFIG_") and "=" in line:
@@ -41,7 +42,7 @@ def measure(build_dir: Path) -> Footprint:
     for path in (elf_path, config_path):
         if not path.is_file():
             raise FileNotFoundError(f"{path} is missing: is {build_dir} a finished Zephyr build?")
-    config = _kconfig(config_path)
+    config = kconfig(config_path)
     flash = (int(config["CONFIG_FLASH_BASE_ADDRESS"], 0), int(config["CONFIG_FLASH_SIZE"]) * 1024)
     sram = (int(config["CONFIG_SRAM_BASE_ADDRESS"], 0), int(config["CONFIG_SRAM_SIZE"]) * 1024)
 

@@ -118,6 +118,8 @@ class Variant:
     footprint: dict[str, int] = field(default_factory=dict)
     #: rom/ram -> symbol -> bytes (kittools.symbols; smaller symbols summed per layer)
     symbols: dict[str, dict[str, int]] = field(default_factory=dict)
+    #: kittools.sizing: tables against the dictionary and the run, and the ports' cost
+    sizing: dict[str, Any] = field(default_factory=dict)
 
     def metric(self, metric: MetricId) -> float | None:
         value = self.metrics.get(metric)
@@ -140,6 +142,8 @@ class Variant:
     def to_json(self, with_records: bool = True) -> dict[str, Any]:
         out: dict[str, Any] = {"passed": self.passed, "build": self.build, "modules": self.modules,
                                "footprint": self.footprint, "metrics": {m.key: v for m, v in self.metrics.items()}}
+        if self.sizing:
+            out["sizing"] = self.sizing
         if self.symbols:
             out["symbols"] = self.symbols
         if with_records:
@@ -185,7 +189,8 @@ class Results:
                 build=dict(v.get("build") or {}), modules=dict(v.get("modules") or {}),
                 footprint=dict(v.get("footprint") or {}),
                 symbols={kind: {str(k): int(n) for k, n in table.items()}
-                         for kind, table in (v.get("symbols") or {}).items()})
+                         for kind, table in (v.get("symbols") or {}).items()},
+                sizing=dict(v.get("sizing") or {}))
         return cls({k: str(x) for k, x in data["conditions"].items()}, variants)
 
 

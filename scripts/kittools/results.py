@@ -10,7 +10,7 @@ import json
 from pathlib import Path
 from typing import Any
 
-from . import compare, conditions, console, model, modules, serial_sweep, symbols
+from . import compare, conditions, console, model, modules, serial_sweep, sizing, symbols
 from .footprint import measure
 from .workspace import KitError
 
@@ -130,7 +130,8 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
         found.append(compare.VariantData(
             run.variant, measure(build), run, modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
             {kind: symbols.table(symbols.leaves(report), symbols.SYMBOL_FLOOR)
-             for kind, report in (("rom", rom), ("ram", ram))}))
+             for kind, report in (("rom", rom), ("ram", ram))},
+            sizing.measure(build, [r.fields for r in run.of_kind("QUEUE")]).to_json()))
     if not found:
         raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario for {board}")
     found.sort(key=lambda d: d.variant)

@@ -88,6 +88,36 @@ def record_tables(data: Results) -> list[Table]:
     return [t for t in found if t is not None]
 
 
+def sizing_tables(data: Results) -> list[Table]:
+    """Sizing advice and the ports' cost, per variant (kittools.sizing)."""
+    names = [v for v in data.names() if data.variants[v].sizing]
+    if not names:
+        return []
+    advice = [[v, t["table"], t["current"], t["needed"], t["unit_bytes"], t["spare_bytes"], t["verdict"],
+               t["basis"], t["setting"]] for v in names for t in data.variants[v].sizing.get("tables", [])]
+    port_rows = []
+    for v in names:
+        p = data.variants[v].sizing.get("ports") or {}
+        if not p:
+            continue
+        port_rows.append([v, p["instances"], p["inputs"], p["input_bytes"], p["outputs"], p["output_bytes"],
+                          round(p["input_bytes"] / p["inputs"], 1) if p["inputs"] else "",
+                          round(p["output_bytes"] / p["outputs"], 1) if p["outputs"] else "",
+                          p["object_bytes"],
+                          f"{(p['input_bytes'] + p['output_bytes']) / p['object_bytes'] * 100:.1f}%"
+                          if p["object_bytes"] else ""])
+    return [
+        Table("Sizing advice: fixed tables against what the dictionary and the run need (entries; bytes per entry "
+              "and spare bytes cover every copy of a table; a queue's need is this run's high-water mark, not a "
+              "bound)", ["variant", "table", "current", "needed", "B/entry", "spare B", "verdict", "basis",
+                         "set in"], advice),
+        Table("Ports: every declared port object of the topology's instances (static RAM, connected or not; "
+              "sizes from the build's debug information)",
+              ["variant", "instances", "input ports", "input B", "output ports", "output B", "B/input",
+               "B/output", "instance objects B", "ports' share"], port_rows),
+    ]
+
+
 def budget_sections(verdict: Verdict, budget: Budget) -> list[Table | Text]:
     """The budget check's verdict and the changed metrics."""
     text = ([f"Budget check: PASS ({budget.describe()})."] if verdict.passed

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, fuzz, ground, results, runner, serial_sweep, sweep, symbols
+from . import budget, console, fuzz, ground, results, runner, serial_sweep, sizing, sweep, symbols
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
@@ -316,7 +316,9 @@ BASELINES = KIT_ROOT / "tests" / "baselines"
 def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseline: bool = False) -> Tally:
     """Results of this twister run on `board` against its committed baseline
     (tests/baselines/<board folder>.json): ROM, RAM, p99 and slips budgets,
-    decided by kittools.budget from the metrics alone.
+    decided by kittools.budget from the metrics alone; and every variant's
+    fixed tables against what its dictionary needs (kittools.sizing), each
+    one count.
     update_baseline: make this run the baseline instead (conditions and
     metrics, no raw records; review the diff).
     Writes <log_dir>/<board folder>/results.json, then its report."""
@@ -337,11 +339,17 @@ def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseli
     verdict = budget.check(data, baseline, limits)
     for violation in verdict.violations:
         print(f"[kit]   budget: {violation}", flush=True)
+    undersized = [f"{name}: {fault}" for name in data.names()
+                  for fault in sizing.too_small([sizing.Advice.from_json(t)
+                                                 for t in data.variants[name].sizing.get("tables", [])])]
+    for fault in undersized:
+        print(f"[kit]   sizing: {fault}", flush=True)
     for variant, sizes in verdict.sizes:
         if variant in verdict.over_size:  # a failed size budget says which symbols grew
             for line in symbols.render(sizes, limit=15):
                 print(f"[kit]   {variant}: {line}", flush=True)
     tally = Tally(passed=1) if verdict.passed else Tally(failed=1)
+    tally.add(Tally(failed=1) if undersized else Tally(passed=1))
     # The report is for the reader; the verdict above does not depend on it
     from . import report
 
