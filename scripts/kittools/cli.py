@@ -7,6 +7,7 @@
   kit gds       boot a board and model under QEMU with fprime-gds on its ground link
   kit serial-sweep  the serial-load sweep of a board and model through its ground link
   kit sizediff  symbols added, removed, grown and shrunk between two builds (or a results file and its baseline)
+  kit footprint what each F´ knob costs: one build per knob from a footprint profile, ROM/RAM by layer, nominal run
   kit sizing    a build's fixed tables against its dictionary and run, and what its ports cost
   kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
 """
@@ -21,7 +22,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import budget, console, ground, report, results, serial_sweep, sizing, style, sweep, symbols, testing
+from . import ablation, budget, console, ground, report, results, serial_sweep, sizing, style, sweep, symbols, testing
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant
 
@@ -196,6 +197,23 @@ def cmd_sizediff(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_footprint(args: argparse.Namespace) -> int:
+    check_board(args.board)
+    check_provisioned()
+    profile, toward = ablation.check_profile(args.profile), ablation.check_profile(args.toward)
+    models = args.model or list(VARIANTS)
+    for model in models:
+        check_variant(model)
+    failed = False
+    for model in models:
+        out_dir = ablation.out_dir_of(args.board, model, profile)
+        rows = ablation.run(args.board, model, profile, toward, out_dir, _say)
+        print("\n".join(ablation.render(rows, args.board, model, profile, toward)) + "\n")
+        _say(f"footprint: {out_dir / 'footprint.md'}, {out_dir / 'footprint.json'}")
+        failed = failed or not rows[0].passed
+    return 1 if failed else 0
+
+
 def cmd_sizing(args: argparse.Namespace) -> int:
     build = Path(args.build).resolve()
     queues: list[dict[str, str]] = []
@@ -269,6 +287,15 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--limit", type=int, default=40, help="symbols shown per kind, largest change first (default 40)")
     d.add_argument("--all", action="store_true", help="every changed symbol")
     d.set_defaults(func=cmd_sizediff)
+    f = sub.add_parser("footprint", help="what each F´ knob costs: from a footprint profile, one build per knob "
+                                         "(ROM, RAM by layer, the nominal run)")
+    f.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
+    f.add_argument("--model", action="append", choices=VARIANTS, help="execution model (repeatable; default: all)")
+    f.add_argument("--profile", default="fprime-kit", help="the profile to start from (modules/fprime/snippets; "
+                                                           "default: fprime-kit)")
+    f.add_argument("--toward", default="fprime-default", help="the profile whose values the knobs move to "
+                                                              "(default: fprime-default)")
+    f.set_defaults(func=cmd_footprint)
     z = sub.add_parser("sizing", help="a build's fixed tables (command dispatch, telemetry, TaskRunner, thread "
                                       "pool, queues) against what its dictionary and run need, and its ports")
     z.add_argument("build", help="a kit build folder (west build -d ...)")

@@ -76,11 +76,77 @@ def dictionary_of(build_dir: Path) -> Path:
     return found[0]
 
 
+class _Types:
+    """Serialized sizes of the dictionary's types, as F´ serializes them:
+    integers and floats by width, bool one byte, enums by their
+    representation, arrays and structs by their members, strings as a
+    length (FwSizeStoreType) and at most their declared size."""
+
+    def __init__(self, dictionary: dict[str, Any]) -> None:
+        self.defined = {t["qualifiedName"]: t for t in dictionary.get("typeDefinitions", [])}
+
+    def size(self, kind: dict[str, Any], depth: int = 0) -> int:
+        if depth > 16:
+            raise KitError(f"dictionary type nests too deep: {kind}")
+        match kind.get("kind"):
+            case "integer" | "float":
+                return int(kind["size"]) // 8
+            case "bool":
+                return 1
+            case "string":
+                return self.named("FwSizeStoreType") + int(kind["size"])
+            case "qualifiedIdentifier":
+                return self.defined_size(self.defined[kind["name"]], depth + 1)
+        raise KitError(f"dictionary type of unknown kind: {kind}")
+
+    def defined_size(self, definition: dict[str, Any], depth: int) -> int:
+        match definition["kind"]:
+            case "alias":
+                return self.size(definition["underlyingType"], depth + 1)
+            case "enum":
+                return self.size(definition["representationType"], depth + 1)
+            case "array":
+                return int(definition["size"]) * self.size(definition["elementType"], depth + 1)
+            case "struct":
+                return sum(self.size(m["type"], depth + 1) * int(m.get("size", 1))
+                           for m in definition["members"].values())
+        raise KitError(f"dictionary type definition of unknown kind: {definition.get('qualifiedName')}")
+
+    def named(self, name: str) -> int:
+        return self.defined_size(self.defined[name], 0)
+
+
+def largest_packet(dictionary: dict[str, Any]) -> tuple[int, str]:
+    """The largest command, event or telemetry packet the dictionary allows
+    (F´'s packet layouts: a descriptor, the id, the time tag where there is
+    one, the arguments or value) and which one it is: the least
+    FW_COM_BUFFER_MAX_SIZE that holds every packet of this deployment."""
+    types = _Types(dictionary)
+    descriptor = types.named("FwPacketDescriptorType")
+    time_tag = types.named("FwTimeBaseStoreType") + types.named("FwTimeContextStoreType") + 4 + 4  # s, us: U32
+    candidates = [(descriptor + types.named("FwOpcodeType") + sum(types.size(p["type"]) for p in c["formalParams"]),
+                   f"command {c['name']}") for c in dictionary.get("commands", [])]
+    candidates += [(descriptor + types.named("FwEventIdType") + time_tag
+                    + sum(types.size(p["type"]) for p in e["formalParams"]), f"event {e['name']}")
+                   for e in dictionary.get("events", [])]
+    candidates += [(descriptor + types.named("FwChanIdType") + time_tag + types.size(c["type"]), f"channel {c['name']}")
+                   for c in dictionary.get("telemetryChannels", [])]
+    return max(candidates) if candidates else (0, "nothing")
+
+
 def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str], active: int) -> list[Advice]:
     commands = len({c["name"] for c in dictionary.get("commands", [])})
     channels = dictionary.get("telemetryChannels", [])
     with_channels = len({c["name"].split(".")[-2] for c in channels})
     found: list[Advice] = []
+    packet, largest = largest_packet(dictionary)
+    if config.get("CONFIG_FPRIME_COM_BUFFER_MAX_SIZE"):
+        # Every queued command, event and packet carries a buffer of this
+        # size, in many copies: what a byte of it costs is measured, not
+        # counted (kit footprint's com_buffer_max_size knob), so no bytes here
+        found.append(Advice("packet buffer (bytes)", "CONFIG_FPRIME_COM_BUFFER_MAX_SIZE (modules/fprime/Kconfig)",
+                            int(config["CONFIG_FPRIME_COM_BUFFER_MAX_SIZE"]), packet, 0,
+                            f"the largest packet, {largest}; a byte's cost: kit footprint"))
     dispatch = info.member("Svc::CommandDispatcherImpl", "m_entryTable")
     if dispatch is not None:
         found.append(Advice("command dispatch table", "CMD_DISPATCHER_DISPATCH_TABLE_SIZE "

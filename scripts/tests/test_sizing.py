@@ -38,3 +38,28 @@ def test_the_report_shows_sizing_and_ports(tmp_path):
     text = (tmp_path / "report.md").read_text()
     assert "Sizing advice" in text and "TLMCHAN_HASH_BUCKETS" in text
     assert "Ports:" in text and "30.6%" in text  # (280 + 192) / 1544
+
+
+def _alias(name: str, bits: int) -> dict:
+    integer = {"name": f"U{bits}", "kind": "integer", "size": bits, "signed": False}
+    return {"kind": "alias", "qualifiedName": name, "type": integer, "underlyingType": integer}
+
+
+def test_the_largest_packet_is_measured_as_f_prime_serializes_it():
+    u32 = {"name": "U32", "kind": "integer", "size": 32, "signed": False}
+    dictionary = {
+        "typeDefinitions": [_alias("FwPacketDescriptorType", 16), _alias("FwOpcodeType", 32),
+                            _alias("FwEventIdType", 32), _alias("FwChanIdType", 32), _alias("FwSizeStoreType", 16),
+                            _alias("FwTimeBaseStoreType", 16), _alias("FwTimeContextStoreType", 8),
+                            {"kind": "enum", "qualifiedName": "Kit.Mode",
+                             "representationType": {"name": "U8", "kind": "integer", "size": 8, "signed": False}},
+                            {"kind": "array", "qualifiedName": "Kit.Four", "size": 4, "elementType": u32}],
+        "commands": [{"name": "Kit.c.SAY", "formalParams": [{"type": {"kind": "string", "size": 40}},
+                                                              {"type": {"kind": "qualifiedIdentifier",
+                                                                        "name": "Kit.Mode"}}]}],
+        "events": [{"name": "Kit.e.ASSERT", "formalParams": [{"type": {"kind": "string", "size": 64}},
+                                                              {"type": u32}]}],
+        "telemetryChannels": [{"name": "Kit.t.Four", "type": {"kind": "qualifiedIdentifier", "name": "Kit.Four"}}],
+    }
+    # command 2+4+(2+40)+1 = 49; event 2+4+11+(2+64)+4 = 87; channel 2+4+11+16 = 33
+    assert sizing.largest_packet(dictionary) == (87, "event Kit.e.ASSERT")

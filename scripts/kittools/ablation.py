@@ -1,0 +1,189 @@
+# SPDX-License-Identifier: Apache-2.0
+"""What each F´ knob costs: `kit footprint`.
+
+For one board and model, build the deployment with a footprint profile
+(modules/fprime/snippets), then once per knob with only that knob moved to
+another profile's value (or, for the assert level, to each other level), and
+record ROM, static RAM and their change per layer against the profile's own
+build; each build then plays the nominal run under QEMU. A build that fails,
+or whose nominal run does not pass, is a row of the table like the others:
+what a knob costs includes what it breaks.
+
+The knobs are the F´ switches of modules/fprime/Kconfig in which the two
+profiles differ, so the list follows the Kconfig and the profiles, not a
+list here.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from . import console, modules, runner
+from .footprint import kconfig, measure
+from .workspace import KIT_ROOT, KitError, board_dir_name, environment
+
+SNIPPETS = KIT_ROOT / "modules" / "fprime" / "snippets"
+#: The assert level is a choice: each alternative is a knob of its own
+ASSERT_LEVELS = ("CONFIG_FPRIME_ASSERT_NONE", "CONFIG_FPRIME_ASSERT_FILE_ID", "CONFIG_FPRIME_ASSERT_FILE_NAME",
+                 "CONFIG_FPRIME_ASSERT_RELATIVE_PATH")
+_PREFIX = "CONFIG_FPRIME_"
+
+
+def profiles() -> list[str]:
+    """The footprint profiles: the snippets of modules/fprime."""
+    return sorted(p.parent.name for p in SNIPPETS.glob("*/snippet.yml"))
+
+
+def check_profile(name: str) -> str:
+    if name not in profiles():
+        raise KitError(f"unknown profile '{name}'; the profiles are: {', '.join(profiles())} "
+                       f"(modules/fprime/snippets)")
+    return name
+
+
+@dataclass(frozen=True)
+class Knob:
+    """One build of the ablation: its name and the settings it adds to the profile."""
+
+    name: str
+    settings: tuple[str, ...] = ()  # CONFIG_X=value
+
+
+@dataclass
+class Row:
+    knob: str
+    settings: list[str]
+    built: bool
+    passed: bool | None = None  # the nominal run; None: not run (the build failed)
+    rom: int | None = None
+    ram: int | None = None
+    rom_layers: dict[str, int] = field(default_factory=dict)
+    ram_layers: dict[str, int] = field(default_factory=dict)
+    note: str = ""
+    seconds: float = 0.0
+
+
+def fprime_settings(dotconfig: Path) -> dict[str, str]:
+    """The F´ switches of a build (modules/fprime/Kconfig), as its .config has them."""
+    return {k: v for k, v in kconfig(dotconfig).items() if k.startswith(_PREFIX)}
+
+
+def knobs(base: dict[str, str], other: dict[str, str]) -> list[Knob]:
+    """One knob per F´ switch in which two profiles' builds differ (moved to
+    the other's value), and one per other assert level."""
+    found = [Knob("profile")]
+    current_assert = next((k for k in ASSERT_LEVELS if base.get(k) == "y"), None)
+    for level in ASSERT_LEVELS:
+        if level != current_assert:
+            found.append(Knob(f"asserts: {level.removeprefix('CONFIG_FPRIME_ASSERT_').lower()}", (f"{level}=y",)))
+    for key in sorted(set(base) | set(other)):
+        if key in ASSERT_LEVELS or key == "CONFIG_FPRIME":
+            continue
+        before, after = base.get(key, "n"), other.get(key, "n")
+        if before != after:
+            name = key.removeprefix(_PREFIX).lower()
+            found.append(Knob(f"{name}: {before} -> {after}", (f"{key}={after}",)))
+    return found
+
+
+def _build(board: str, model: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path) -> bool:
+    command = ["west", "build", "-p", "always", "-b", board, "-d", str(build_dir), "-S", profile,
+               str(KIT_ROOT / "app"), "--", f"-DCONFIG_KIT_MODEL_{model.upper()}=y",
+               *(f"-D{s}" for s in settings)]
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("w") as output:
+        output.write(" ".join(command) + "\n")
+        output.flush()
+        return subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=output,
+                              stderr=subprocess.STDOUT).returncode == 0
+
+
+def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) -> Row:
+    started = time.monotonic()
+    slug = "".join(c if c.isalnum() else "-" for c in knob.name).strip("-")
+    build_dir = out_dir / slug
+    row = Row(knob.name, list(knob.settings), built=_build(board, model, profile, knob.settings, build_dir,
+                                                            out_dir / f"{slug}.build.log"))
+    if row.built:
+        footprint = measure(build_dir)
+        row.rom, row.ram = footprint.rom, footprint.ram
+        row.rom_layers = modules.breakdown(modules.report(build_dir, "rom"))
+        row.ram_layers = modules.breakdown(modules.report(build_dir, "ram"))
+        try:
+            text = runner.run(build_dir, out_dir / f"{slug}.run.log")
+        except KitError as error:  # no end line in time
+            row.passed = False
+            row.note = str(error).splitlines()[0][:300]
+        else:
+            # A halted run has no END line: its HALT or FATAL line says why
+            records = [r for r in map(console.parse_line, text.splitlines()) if r is not None]
+            row.passed = any(r.kind == "END" and r.fields.get("result") == "PASS" for r in records)
+            if not row.passed:
+                row.note = "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
+                                     for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
+    else:
+        row.note = f"build failed: {out_dir / f'{slug}.build.log'}"
+    row.seconds = time.monotonic() - started
+    return row
+
+
+def run(board: str, model: str, profile: str, toward: str, out_dir: Path, say: Callable[[str], None]) -> list[Row]:
+    """The ablation of one board and model from `profile`, each knob moved toward `toward`."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    say(f"footprint: {board} {model}: building the profiles {profile} and {toward}")
+    base = _measure(Knob("profile"), board, model, profile, out_dir)
+    if not base.built:
+        raise KitError(f"the profile {profile} does not build for {board} {model}: {base.note}")
+    other_dir = out_dir / "toward"
+    if not _build(board, model, toward, (), other_dir, out_dir / "toward.build.log"):
+        raise KitError(f"the profile {toward} does not configure for {board} {model}: {out_dir / 'toward.build.log'}")
+    plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
+                 fprime_settings(other_dir / "zephyr" / ".config"))
+    rows = [base]
+    for index, knob in enumerate(plan[1:], start=1):
+        row = _measure(knob, board, model, profile, out_dir)
+        rows.append(row)
+        verdict = "build FAILED" if not row.built else ("nominal PASS" if row.passed else "nominal FAIL")
+        say(f"footprint: {index}/{len(plan) - 1} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
+            f"({row.seconds:.0f} s)")
+    (out_dir / "footprint.json").write_text(json.dumps(
+        {"board": board, "model": model, "profile": profile, "toward": toward,
+         "rows": [asdict(r) for r in rows]}, indent=2) + "\n")
+    (out_dir / "footprint.md").write_text("\n".join(render(rows, board, model, profile, toward)) + "\n")
+    return rows
+
+
+def _delta(value: int | None, base: int | None) -> str:
+    if value is None or base is None:
+        return ""
+    return f"{value - base:+,d}"
+
+
+def render(rows: list[Row], board: str, model: str, profile: str, toward: str) -> list[str]:
+    """The ablation as a Markdown table: each knob's ROM and RAM against the
+    profile, the layers that moved most, and whether the nominal run passed."""
+    base = rows[0]
+    lines = [f"### F´ knobs on {board}, {model}: from {profile}, one knob at a time toward {toward}", "",
+             "| knob | ROM | ΔROM | RAM | ΔRAM | layers moved most (ROM / RAM) | nominal run |",
+             "|---|---:|---:|---:|---:|---|---|"]
+    for row in rows:
+        moved = []
+        for kind, layers, base_layers in (("ROM", row.rom_layers, base.rom_layers),
+                                          ("RAM", row.ram_layers, base.ram_layers)):
+            changes = sorted(((layers.get(k, 0) - base_layers.get(k, 0), k) for k in set(layers) | set(base_layers)),
+                             key=lambda c: -abs(c[0]))
+            moved += [f"{kind} {k} {d:+,d}" for d, k in changes[:2] if d]
+        verdict = "build failed" if not row.built else ("PASS" if row.passed else f"FAIL: {row.note}")
+        deltas = ("", "") if row is base else (_delta(row.rom, base.rom), _delta(row.ram, base.ram))
+        lines.append(f"| {row.knob} | {row.rom if row.rom is not None else ''} | {deltas[0]} | "
+                     f"{row.ram if row.ram is not None else ''} | {deltas[1]} | {'; '.join(moved)} | {verdict} |")
+    return lines
+
+
+def out_dir_of(board: str, model: str, profile: str) -> Path:
+    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{model}-{profile}"
