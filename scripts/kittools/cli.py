@@ -108,11 +108,14 @@ def cmd_test(args: argparse.Namespace) -> int:
         steps.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
         steps.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
         steps.append(("C++ style (clang-format, F´ style)", style.run_style_check))
+    started = time.monotonic()
     for name, step in steps:
         _say(f"{name} ...")
+        step_started = time.monotonic()
         tally = step()
-        _say(f"{name}: {tally.passed} passed, {tally.failed} failed")
+        _say(f"{name}: {tally.passed} passed, {tally.failed} failed ({time.monotonic() - step_started:.0f} s)")
         total.add(tally)
+    _say(f"all steps: {time.monotonic() - started:.0f} s")
     print(f"total: {total.passed} passed, {total.failed} failed")
     return 0 if total.failed == 0 and total.passed > 0 else 1
 
