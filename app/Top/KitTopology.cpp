@@ -67,6 +67,9 @@ namespace {
 
 // F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
 // the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
+// The F´ allocator's memory ID of TlmLinearChan's table (CONFIG_KIT_TELEMETRY_LINEAR)
+constexpr FwEnumStoreType TELEMETRY_STORE_ID = 2;
+
 // The F´ allocator's bytes the link's buffers, accumulator and queues took
 FwSizeType s_linkBufferBytes = 0;
 
@@ -118,6 +121,10 @@ void configureTopology(const TopologyState& state) {
     const FwSizeType before = state.allocator.currentBytes();
     configureLink(state.allocator);
     s_linkBufferBytes = state.allocator.currentBytes() - before;
+#if defined(CONFIG_KIT_TELEMETRY_LINEAR)
+    // fprime-baremetal's telemetry store takes its one table from the allocator
+    tlmSend.setup(TELEMETRY_STORE_ID, state.allocator);
+#endif
 }
 
 }  // namespace

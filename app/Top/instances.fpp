@@ -80,10 +80,7 @@ module Kit {
     stack size Stacks.events \
     priority Priorities.events
 
-  instance tlmSend: Svc.TlmChan base id 0x0700 \
-    queue size Queues.tlmSend \
-    stack size Stacks.tlmSend \
-    priority Priorities.tlmSend
+  # tlmSend, the telemetry store: app/Top/telemetry/ (CONFIG_KIT_TELEMETRY_LINEAR)
 
   instance load: Kit.Load base id 0x1600 \
     queue size Queues.load \

@@ -11,7 +11,7 @@ what a knob costs includes what it breaks.
 
 The knobs are the F´ switches of modules/fprime/Kconfig in which the two
 profiles differ, so the list follows the Kconfig and the profiles, not a
-list here.
+list here; and the services' other forms a model has (SERVICE_KNOBS).
 """
 
 from __future__ import annotations
@@ -52,6 +52,16 @@ class Knob:
 
     name: str
     settings: tuple[str, ...] = ()  # CONFIG_X=value
+    models: tuple[str, ...] = ()  # the models it applies to (empty: all)
+
+
+#: Knobs that are not F´ switches: a service's other form, where a model has it
+SERVICE_KNOBS = (
+    # fprime-baremetal builds TlmLinearChan for its own model only; its table
+    # comes out of the C heap, whose arena grows to hold it (app/Kconfig)
+    Knob("telemetry store: TlmChan -> TlmLinearChan",
+         ("CONFIG_KIT_TELEMETRY_LINEAR=y", "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=15360"), ("baremetal",)),
+)
 
 
 @dataclass
@@ -73,9 +83,10 @@ def fprime_settings(dotconfig: Path) -> dict[str, str]:
     return {k: v for k, v in kconfig(dotconfig).items() if k.startswith(_PREFIX)}
 
 
-def knobs(base: dict[str, str], other: dict[str, str]) -> list[Knob]:
+def knobs(base: dict[str, str], other: dict[str, str], model: str) -> list[Knob]:
     """One knob per F´ switch in which two profiles' builds differ (moved to
-    the other's value), and one per other assert level."""
+    the other's value), one per other assert level, and the model's service
+    knobs."""
     found = [Knob("profile")]
     current_assert = next((k for k in ASSERT_LEVELS if base.get(k) == "y"), None)
     for level in ASSERT_LEVELS:
@@ -88,7 +99,7 @@ def knobs(base: dict[str, str], other: dict[str, str]) -> list[Knob]:
         if before != after:
             name = key.removeprefix(_PREFIX).lower()
             found.append(Knob(f"{name}: {before} -> {after}", (f"{key}={after}",)))
-    return found
+    return found + [k for k in SERVICE_KNOBS if not k.models or model in k.models]
 
 
 def _build(board: str, model: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path) -> bool:
@@ -143,7 +154,7 @@ def run(board: str, model: str, profile: str, toward: str, out_dir: Path, say: C
     if not _build(board, model, toward, (), other_dir, out_dir / "toward.build.log"):
         raise KitError(f"the profile {toward} does not configure for {board} {model}: {out_dir / 'toward.build.log'}")
     plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
-                 fprime_settings(other_dir / "zephyr" / ".config"))
+                 fprime_settings(other_dir / "zephyr" / ".config"), model)
     rows = [base]
     for index, knob in enumerate(plan[1:], start=1):
         row = _measure(knob, board, model, profile, out_dir)

@@ -161,6 +161,18 @@ class DebugInfo:
             return None
         return next((m for n, m in self.members(cls) if n == member_name), None)
 
+    def enumerator(self, unit_suffix: str, enumerator_name: str) -> int | None:
+        """The value of an enumerator as a compilation unit saw it (a
+        configuration constant such as TLMCHAN_HASH_BUCKETS)."""
+        for unit in self._units:
+            top = unit.get_top_DIE()
+            if not name(top).endswith(unit_suffix):
+                continue
+            for die in unit.iter_DIEs():
+                if die.tag == "DW_TAG_enumerator" and name(die) == enumerator_name:
+                    return int(die.attributes["DW_AT_const_value"].value)
+        return None
+
     def instances(self) -> list[Instance]:
         """Every component instance of the topology (classes derived from F´'s ObjBase)."""
         for unit in self._units:

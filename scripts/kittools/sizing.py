@@ -164,6 +164,12 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
                             slots.element_bytes * sets.count,
                             f"baremetal-size's rule: one per component with channels ({with_channels}); fewer "
                             "only lengthens the search", must_fit=False))
+    linear = info.cls("Baremetal::TlmLinearChan::tlmEntry")
+    linear_entries = info.enumerator("TlmLinearChan.cpp", "TLMCHAN_HASH_BUCKETS") if linear is not None else None
+    if linear is not None and linear_entries is not None:
+        found.append(Advice("telemetry table (TlmLinearChan, heap)", "TLMCHAN_HASH_BUCKETS "
+                            "(app/config/TlmChanImplCfg.hpp)", linear_entries, len(channels), info.size(linear),
+                            f"{len(channels)} channels in the dictionary; an entry is never freed"))
     runner = info.member("Os::Baremetal::TaskRunner", "m_task_table")
     if runner is not None:
         found.append(Advice("TaskRunner task table", "TASK_CAPACITY (fprime-baremetal "

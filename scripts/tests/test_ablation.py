@@ -10,10 +10,11 @@ def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_le
            "CONFIG_FPRIME_CMD_STRING_MAX_SIZE": "40"}
     default = {"CONFIG_FPRIME": "y", "CONFIG_FPRIME_ASSERT_FILE_NAME": "y", "CONFIG_FPRIME_OBJECT_NAMES": "y",
                "CONFIG_FPRIME_COM_BUFFER_MAX_SIZE": "512", "CONFIG_FPRIME_CMD_STRING_MAX_SIZE": "40"}
-    found = ablation.knobs(kit, default)
+    found = ablation.knobs(kit, default, "rtos")
     assert [k.name for k in found] == [
         "profile", "asserts: none", "asserts: file_id", "asserts: file_name",
         "com_buffer_max_size: 128 -> 512", "object_names: n -> y"]
+    assert ablation.knobs(kit, default, "baremetal")[-1].name == "telemetry store: TlmChan -> TlmLinearChan"
     assert found[1].settings == ("CONFIG_FPRIME_ASSERT_NONE=y",)
     assert found[-1].settings == ("CONFIG_FPRIME_OBJECT_NAMES=y",)
 
