@@ -22,8 +22,10 @@ import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
+from typing import Any
 
-from . import console, modules, runner
+from . import console, modules, render, runner
+from .document import CAVEAT, Section, Table, Text
 from .footprint import kconfig, measure
 from .workspace import KIT_ROOT, KitError, board_dir_name, environment
 
@@ -165,7 +167,6 @@ def run(board: str, model: str, profile: str, toward: str, out_dir: Path, say: C
     (out_dir / "footprint.json").write_text(json.dumps(
         {"board": board, "model": model, "profile": profile, "toward": toward,
          "rows": [asdict(r) for r in rows]}, indent=2) + "\n")
-    (out_dir / "footprint.md").write_text("\n".join(render(rows, board, model, profile, toward)) + "\n")
     return rows
 
 
@@ -175,25 +176,53 @@ def _delta(value: int | None, base: int | None) -> str:
     return f"{value - base:+,d}"
 
 
-def render(rows: list[Row], board: str, model: str, profile: str, toward: str) -> list[str]:
-    """The ablation as a Markdown table: each knob's ROM and RAM against the
+def table(rows: list[Row], board: str, model: str, profile: str, toward: str) -> Table:
+    """The ablation of one model: each knob's ROM and RAM against the
     profile, the layers that moved most, and whether the nominal run passed."""
     base = rows[0]
-    lines = [f"### F´ knobs on {board}, {model}: from {profile}, one knob at a time toward {toward}", "",
-             "| knob | ROM | ΔROM | RAM | ΔRAM | layers moved most (ROM / RAM) | nominal run |",
-             "|---|---:|---:|---:|---:|---|---|"]
+    body: list[list[Any]] = []
     for row in rows:
         moved = []
         for kind, layers, base_layers in (("ROM", row.rom_layers, base.rom_layers),
                                           ("RAM", row.ram_layers, base.ram_layers)):
             changes = sorted(((layers.get(k, 0) - base_layers.get(k, 0), k) for k in set(layers) | set(base_layers)),
-                             key=lambda c: -abs(c[0]))
+                             key=lambda c: (-abs(c[0]), c[1]))
             moved += [f"{kind} {k} {d:+,d}" for d, k in changes[:2] if d]
         verdict = "build failed" if not row.built else ("PASS" if row.passed else f"FAIL: {row.note}")
         deltas = ("", "") if row is base else (_delta(row.rom, base.rom), _delta(row.ram, base.ram))
-        lines.append(f"| {row.knob} | {row.rom if row.rom is not None else ''} | {deltas[0]} | "
-                     f"{row.ram if row.ram is not None else ''} | {deltas[1]} | {'; '.join(moved)} | {verdict} |")
-    return lines
+        body.append([row.knob, row.rom if row.rom is not None else "", deltas[0],
+                     row.ram if row.ram is not None else "", deltas[1], "; ".join(moved), verdict])
+    return Table(f"F´ knobs on {board}, {model}: from {profile}, one knob at a time toward {toward} (bytes)",
+                 ["knob", "ROM", "ΔROM", "RAM", "ΔRAM", "layers moved most (ROM / RAM)", "nominal run"], body)
+
+
+def write_report(tables: list[Table], out_dir: Path) -> list[Path]:
+    """The ablation's report: Markdown and self-contained HTML, like the
+    design-review report's."""
+    intro: Section = Text("What each F´ knob costs", [
+        "Each row is one build: the profile's, or the profile with one knob moved; ΔROM and ΔRAM are against the "
+        "profile's build, static RAM as the linker places it (a knob that moves memory into the C heap shows the "
+        "arena it needs).",
+        "Each build then plays the nominal run under QEMU; a row that fails says why (its HALT, FATAL or HEAP "
+        "line).", CAVEAT])
+    sections: list[Section] = [intro, *tables]
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "report.md").write_text(render.to_markdown(sections, {}))
+    (out_dir / "report.html").write_text(render.to_html(sections))
+    return [out_dir / "report.md", out_dir / "report.html"]
+
+
+def load(path: Path) -> tuple[dict[str, str], list[Row]]:
+    """A footprint.json: its conditions (board, model, profile, toward) and rows."""
+    if not path.is_file():
+        raise KitError(f"no ablation at {path}: run scripts/kit footprint first")
+    data = json.loads(path.read_text())
+    return ({k: str(data[k]) for k in ("board", "model", "profile", "toward")},
+            [Row(**row) for row in data["rows"]])
+
+
+def report_dir_of(board: str, profile: str) -> Path:
+    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{profile}-report"
 
 
 def out_dir_of(board: str, model: str, profile: str) -> Path:

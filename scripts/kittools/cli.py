@@ -202,19 +202,22 @@ def cmd_sizediff(args: argparse.Namespace) -> int:
 
 def cmd_footprint(args: argparse.Namespace) -> int:
     check_board(args.board)
-    check_provisioned()
     profile, toward = ablation.check_profile(args.profile), ablation.check_profile(args.toward)
     models = args.model or list(VARIANTS)
     for model in models:
         check_variant(model)
-    failed = False
+    if not args.report_only:
+        check_provisioned()
+        for model in models:
+            ablation.run(args.board, model, profile, toward, ablation.out_dir_of(args.board, model, profile), _say)
+    tables = []
     for model in models:
-        out_dir = ablation.out_dir_of(args.board, model, profile)
-        rows = ablation.run(args.board, model, profile, toward, out_dir, _say)
-        print("\n".join(ablation.render(rows, args.board, model, profile, toward)) + "\n")
-        _say(f"footprint: {out_dir / 'footprint.md'}, {out_dir / 'footprint.json'}")
-        failed = failed or not rows[0].passed
-    return 1 if failed else 0
+        conditions, rows = ablation.load(ablation.out_dir_of(args.board, model, profile) / "footprint.json")
+        tables.append(ablation.table(rows, conditions["board"], model, conditions["profile"], conditions["toward"]))
+    files = ablation.write_report(tables, ablation.report_dir_of(args.board, profile))
+    print(files[0].read_text())
+    _say(f"footprint report: {', '.join(str(f) for f in files)}")
+    return 0
 
 
 def cmd_sizing(args: argparse.Namespace) -> int:
@@ -298,6 +301,8 @@ def parser() -> argparse.ArgumentParser:
                                                            "default: fprime-kit)")
     f.add_argument("--toward", default="fprime-default", help="the profile whose values the knobs move to "
                                                               "(default: fprime-default)")
+    f.add_argument("--report-only", action="store_true",
+                   help="write the report from the models' last ablations (build/footprint/), building nothing")
     f.set_defaults(func=cmd_footprint)
     z = sub.add_parser("sizing", help="a build's fixed tables (command dispatch, telemetry, TaskRunner, thread "
                                       "pool, queues) against what its dictionary and run need, and its ports")

@@ -29,14 +29,16 @@ def test_every_profile_sets_only_switches_of_modules_fprime():
         assert set(assigned) <= symbols, f"{conf}: {set(assigned) - symbols} are not modules/fprime switches"
 
 
-def test_the_table_says_what_each_knob_cost_and_broke():
+def test_the_table_says_what_each_knob_cost_and_broke(tmp_path):
     base = ablation.Row("profile", [], built=True, passed=True, rom=1000, ram=500,
                         rom_layers={"F´ framework": 600}, ram_layers={"F´ framework": 300})
     names = ablation.Row("object_names: n -> y", ["CONFIG_FPRIME_OBJECT_NAMES=y"], built=True, passed=False,
                          rom=1400, ram=900, rom_layers={"F´ framework": 1000}, ram_layers={"F´ framework": 700},
                          note="HEAP failures=3")
     broken = ablation.Row("com_buffer_max_size: 128 -> 512", [], built=False, note="build failed")
-    lines = ablation.render([base, names, broken], "qemu_cortex_m3", "rtos", "fprime-kit", "fprime-default")
-    assert "| object_names: n -> y | 1400 | +400 | 900 | +400 | ROM F´ framework +400; RAM F´ framework +400 " \
-           "| FAIL: HEAP failures=3 |" in lines
-    assert lines[-1].endswith("| build failed |")
+    found = ablation.table([base, names, broken], "qemu_cortex_m3", "rtos", "fprime-kit", "fprime-default")
+    assert found.rows[1] == ["object_names: n -> y", 1400, "+400", 900, "+400",
+                             "ROM F´ framework +400; RAM F´ framework +400", "FAIL: HEAP failures=3"]
+    assert found.rows[2][-1] == "build failed"
+    ablation.write_report([found], tmp_path)
+    assert "| object_names: n -> y | 1,400 | +400 |" in (tmp_path / "report.md").read_text()
