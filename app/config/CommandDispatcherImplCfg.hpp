@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Dispatch table: one entry per registered opcode (the kit has ~20).
+// Dispatch table: one entry per registered opcode. The dictionary has 16
+// commands, and the table holds exactly those (`scripts/kit sizing`: 32
+// entries left 16 spare, 12 B each, 192 B). The dispatcher asserts at
+// registration when a command has no entry, so a new command needs a larger
+// table: `scripts/kit test` says so first, from the build's dictionary
+// (kittools.sizing), before anything boots.
 // Sequence tracking: commands in flight from the uplink at once.
 #ifndef CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 #define CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 
 enum {
-    CMD_DISPATCHER_DISPATCH_TABLE_SIZE = 32,
+    CMD_DISPATCHER_DISPATCH_TABLE_SIZE = 16,
     CMD_DISPATCHER_SEQUENCER_TABLE_SIZE = 4,
 };
 

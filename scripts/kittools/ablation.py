@@ -17,6 +17,7 @@ list here; and the services' other forms a model has (SERVICE_KNOBS).
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import time
 from collections.abc import Callable
@@ -104,10 +105,14 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str) -> list[Knob]
     return found + [k for k in SERVICE_KNOBS if not k.models or model in k.models]
 
 
-def _build(board: str, model: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path) -> bool:
+_OVERFLOW = re.compile(r"region `(?P<region>\w+)' overflowed by (?P<bytes>\d+) bytes")
+
+
+def _build(board: str, model: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path,
+           cmake_only: bool = False) -> bool:
     command = ["west", "build", "-p", "always", "-b", board, "-d", str(build_dir), "-S", profile,
-               str(KIT_ROOT / "app"), "--", f"-DCONFIG_KIT_MODEL_{model.upper()}=y",
-               *(f"-D{s}" for s in settings)]
+               *(["--cmake-only"] if cmake_only else []), str(KIT_ROOT / "app"), "--",
+               f"-DCONFIG_KIT_MODEL_{model.upper()}=y", *(f"-D{s}" for s in settings)]
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as output:
         output.write(" ".join(command) + "\n")
@@ -118,7 +123,7 @@ def _build(board: str, model: str, profile: str, settings: tuple[str, ...], buil
 
 def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) -> Row:
     started = time.monotonic()
-    slug = "".join(c if c.isalnum() else "-" for c in knob.name).strip("-")
+    slug = re.sub(r"-+", "-", "".join(c if c.isalnum() else "-" for c in knob.name)).strip("-")
     build_dir = out_dir / slug
     row = Row(knob.name, list(knob.settings), built=_build(board, model, profile, knob.settings, build_dir,
                                                             out_dir / f"{slug}.build.log"))
@@ -140,7 +145,10 @@ def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) ->
                 row.note = "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
                                      for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
     else:
-        row.note = f"build failed: {out_dir / f'{slug}.build.log'}"
+        log = out_dir / f"{slug}.build.log"
+        overflows = [f"{m['region']} overflowed by {int(m['bytes']):,} B"
+                     for m in _OVERFLOW.finditer(log.read_text(errors="replace"))]
+        row.note = f"{'; '.join(dict.fromkeys(overflows)) or 'see'} ({log.name})"
     row.seconds = time.monotonic() - started
     return row
 
@@ -152,9 +160,11 @@ def run(board: str, model: str, profile: str, toward: str, out_dir: Path, say: C
     base = _measure(Knob("profile"), board, model, profile, out_dir)
     if not base.built:
         raise KitError(f"the profile {profile} does not build for {board} {model}: {base.note}")
+    # The other profile's values: its configuration is enough (it need not fit)
     other_dir = out_dir / "toward"
-    if not _build(board, model, toward, (), other_dir, out_dir / "toward.build.log"):
-        raise KitError(f"the profile {toward} does not configure for {board} {model}: {out_dir / 'toward.build.log'}")
+    if not _build(board, model, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True):
+        raise KitError(f"the profile {toward} does not configure for {board} {model}: "
+                       f"{out_dir / 'toward.configure.log'}")
     plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
                  fprime_settings(other_dir / "zephyr" / ".config"), model)
     rows = [base]
@@ -162,8 +172,11 @@ def run(board: str, model: str, profile: str, toward: str, out_dir: Path, say: C
         row = _measure(knob, board, model, profile, out_dir)
         rows.append(row)
         verdict = "build FAILED" if not row.built else ("nominal PASS" if row.passed else "nominal FAIL")
-        say(f"footprint: {index}/{len(plan) - 1} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
+        say(f"footprint: {index}/{len(plan)} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
             f"({row.seconds:.0f} s)")
+    # Last, the other profile whole: every knob moved at once
+    rows.append(_measure(Knob(f"profile {toward}"), board, model, toward, out_dir))
+    say(f"footprint: profile {toward}: {'built' if rows[-1].built else 'build FAILED'} {rows[-1].note}")
     (out_dir / "footprint.json").write_text(json.dumps(
         {"board": board, "model": model, "profile": profile, "toward": toward,
          "rows": [asdict(r) for r in rows]}, indent=2) + "\n")
