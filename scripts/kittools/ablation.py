@@ -106,6 +106,18 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str) -> list[Knob]
 
 
 _OVERFLOW = re.compile(r"region `(?P<region>\w+)' overflowed by (?P<bytes>\d+) bytes")
+_ERROR = re.compile(r"error: (?P<message>.+)$", re.MULTILINE)
+
+
+def build_failure(log: Path) -> str:
+    """Why a build failed, in a line: the memory regions that overflowed, or
+    the first distinct compiler errors (F´'s static asserts tie knobs together)."""
+    text = log.read_text(errors="replace") if log.is_file() else ""
+    found = [f"{m['region']} overflowed by {int(m['bytes']):,} B" for m in _OVERFLOW.finditer(text)]
+    if not found:
+        found = [m["message"].strip() for m in _ERROR.finditer(text)
+                 if not m["message"].startswith(("ld returned", "command exited"))]
+    return f"{'; '.join(list(dict.fromkeys(found))[:2]) or 'no reason found'} ({log.name})"
 
 
 def _build(board: str, model: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path,
@@ -121,9 +133,14 @@ def _build(board: str, model: str, profile: str, settings: tuple[str, ...], buil
                               stderr=subprocess.STDOUT).returncode == 0
 
 
+def _slug(knob: str) -> str:
+    """A knob's build folder and log names."""
+    return re.sub(r"-+", "-", "".join(c if c.isalnum() else "-" for c in knob)).strip("-")
+
+
 def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) -> Row:
     started = time.monotonic()
-    slug = re.sub(r"-+", "-", "".join(c if c.isalnum() else "-" for c in knob.name)).strip("-")
+    slug = _slug(knob.name)
     build_dir = out_dir / slug
     row = Row(knob.name, list(knob.settings), built=_build(board, model, profile, knob.settings, build_dir,
                                                             out_dir / f"{slug}.build.log"))
@@ -145,10 +162,7 @@ def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) ->
                 row.note = "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
                                      for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
     else:
-        log = out_dir / f"{slug}.build.log"
-        overflows = [f"{m['region']} overflowed by {int(m['bytes']):,} B"
-                     for m in _OVERFLOW.finditer(log.read_text(errors="replace"))]
-        row.note = f"{'; '.join(dict.fromkeys(overflows)) or 'see'} ({log.name})"
+        row.note = build_failure(out_dir / f"{slug}.build.log")
     row.seconds = time.monotonic() - started
     return row
 
@@ -230,8 +244,11 @@ def load(path: Path) -> tuple[dict[str, str], list[Row]]:
     if not path.is_file():
         raise KitError(f"no ablation at {path}: run scripts/kit footprint first")
     data = json.loads(path.read_text())
-    return ({k: str(data[k]) for k in ("board", "model", "profile", "toward")},
-            [Row(**row) for row in data["rows"]])
+    rows = [Row(**row) for row in data["rows"]]
+    for row in rows:
+        if not row.built:  # the reason, as this version reads it from the build's log
+            row.note = build_failure(path.parent / f"{_slug(row.knob)}.build.log")
+    return ({k: str(data[k]) for k in ("board", "model", "profile", "toward")}, rows)
 
 
 def report_dir_of(board: str, profile: str) -> Path:
