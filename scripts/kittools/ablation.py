@@ -211,11 +211,11 @@ def table(rows: list[Row], board: str, model: str, profile: str, toward: str) ->
     for row in rows:
         moved = []
         for kind, layers, base_layers in (("ROM", row.rom_layers, base.rom_layers),
-                                          ("RAM", row.ram_layers, base.ram_layers)):
+                                          ("RAM", row.ram_layers, base.ram_layers)) if row.built else ():
             changes = sorted(((layers.get(k, 0) - base_layers.get(k, 0), k) for k in set(layers) | set(base_layers)),
                              key=lambda c: (-abs(c[0]), c[1]))
             moved += [f"{kind} {k} {d:+,d}" for d, k in changes[:2] if d]
-        verdict = "build failed" if not row.built else ("PASS" if row.passed else f"FAIL: {row.note}")
+        verdict = f"build failed: {row.note}" if not row.built else ("PASS" if row.passed else f"FAIL: {row.note}")
         deltas = ("", "") if row is base else (_delta(row.rom, base.rom), _delta(row.ram, base.ram))
         body.append([row.knob, row.rom if row.rom is not None else "", deltas[0],
                      row.ram if row.ram is not None else "", deltas[1], "; ".join(moved), verdict])

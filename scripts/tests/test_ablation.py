@@ -39,6 +39,6 @@ def test_the_table_says_what_each_knob_cost_and_broke(tmp_path):
     found = ablation.table([base, names, broken], "qemu_cortex_m3", "rtos", "fprime-kit", "fprime-default")
     assert found.rows[1] == ["object_names: n -> y", 1400, "+400", 900, "+400",
                              "ROM F´ framework +400; RAM F´ framework +400", "FAIL: HEAP failures=3"]
-    assert found.rows[2][-1] == "build failed"
+    assert found.rows[2][-2:] == ["", "build failed: build failed"]
     ablation.write_report([found], tmp_path)
     assert "| object_names: n -> y | 1,400 | +400 |" in (tmp_path / "report.md").read_text()
