@@ -227,7 +227,9 @@ def cmd_sizing(args: argparse.Namespace) -> int:
         log = Path(args.log)
         if not log.is_file():
             raise KitError(f"no console log at {log}")
-        queues = [r.fields for r in console.parse(log.read_text()).of_kind("QUEUE")]
+        # Any run that printed its queues will do, finished or halted
+        records = (console.parse_line(line) for line in log.read_text(errors="replace").splitlines())
+        queues = [r.fields for r in records if r is not None and r.kind == "QUEUE"]
         if not queues:
             raise KitError(f"{log} has no KIT QUEUE lines (a nominal, load, faults or soak run prints them)")
     found = sizing.measure(build, queues)

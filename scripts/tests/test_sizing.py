@@ -63,3 +63,14 @@ def test_the_largest_packet_is_measured_as_f_prime_serializes_it():
     }
     # command 2+4+(2+40)+1 = 49; event 2+4+11+(2+64)+4 = 87; channel 2+4+11+16 = 33
     assert sizing.largest_packet(dictionary) == (87, "event Kit.e.ASSERT")
+
+
+def test_sizing_refuses_a_log_without_queues(tmp_path, capsys):
+    from kittools import cli
+
+    log = tmp_path / "console.log"
+    log.write_text("KIT BANNER variant=rtos\n*** Booting Zephyr ***\n")  # a run cut before its records
+    assert cli.main(["sizing", str(tmp_path), "--log", str(log)]) == 2
+    assert "has no KIT QUEUE lines" in capsys.readouterr().err
+    assert cli.main(["sizing", str(tmp_path), "--log", str(tmp_path / "missing.log")]) == 2
+    assert "no console log" in capsys.readouterr().err
