@@ -51,6 +51,14 @@ def dictionary_id(dictionary: Path) -> str:
     return hashlib.sha256(dictionary.read_bytes()).hexdigest()[:16]
 
 
+def dictionary_of(build_dir: Path) -> Path:
+    """The F´ dictionary a kit build made."""
+    dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
+    if not dictionaries:
+        raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
+    return dictionaries[0]
+
+
 def link_of(build_dir: Path, dictionary: Path | None = None) -> Link:
     """The link socket and the dictionary of a built kit build; `dictionary`
     replaces the build's own (`boot` checks that it is the firmware's)."""
@@ -58,10 +66,7 @@ def link_of(build_dir: Path, dictionary: Path | None = None) -> Link:
     if not socket_path:
         raise KitError(f"{build_dir} has no ground link (no KIT_LINK_SOCKET): is it a kit build of this version?")
     if dictionary is None:
-        dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
-        if not dictionaries:
-            raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-        dictionary = dictionaries[0]
+        dictionary = dictionary_of(build_dir)
     elif not dictionary.is_file():
         raise KitError(f"no dictionary at {dictionary}")
     return Link(build_dir, Path(socket_path), dictionary, cache_value(build_dir, "KIT_BOARD_TARGET") or "")

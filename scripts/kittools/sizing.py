@@ -18,7 +18,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from . import ports
+from . import ground, ports
 from .debuginfo import DebugInfo
 from .footprint import kconfig
 from .workspace import KitError
@@ -67,13 +67,6 @@ class Sizing:
 
     def to_json(self) -> dict[str, Any]:
         return {"tables": [a.to_json() for a in self.advice], "ports": self.ports.to_json()}
-
-
-def dictionary_of(build_dir: Path) -> Path:
-    found = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
-    if not found:
-        raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-    return found[0]
 
 
 class _Types:
@@ -194,7 +187,7 @@ def queue_advice(records: list[dict[str, str]]) -> list[Advice]:
 
 def measure(build_dir: Path, queue_records: list[dict[str, str]] | None = None) -> Sizing:
     """The sizing of a build; with the QUEUE records of its run, its queues too."""
-    dictionary = json.loads(dictionary_of(build_dir).read_text())
+    dictionary = json.loads(ground.dictionary_of(build_dir).read_text())
     config = kconfig(build_dir / "zephyr" / ".config")
     with DebugInfo(build_dir) as info:
         cost = ports.measure(info)
