@@ -175,6 +175,9 @@ macro(kit_deployment)
     set(KIT_MODEL_DIR "${KIT_ROOT}/${CONFIG_KIT_MODEL_NAME}")
     include("${KIT_MODEL_DIR}/model.cmake")
 
+    # Every scenario, and the choice among them (app/scenarios/Scenarios.cpp)
+    file(GLOB KIT_SCENARIO_SOURCES CONFIGURE_DEPENDS "${KIT_ROOT}/app/scenarios/*.cpp")
+
     register_fprime_zephyr_deployment(kit_${CONFIG_KIT_MODEL_NAME}
         SOURCES
             "${KIT_ROOT}/app/src/main.cpp"
@@ -183,7 +186,7 @@ macro(kit_deployment)
             "${KIT_ROOT}/app/src/Fatal.cpp"
             "${KIT_ROOT}/app/src/TickClock.cpp"
             "${KIT_ROOT}/app/src/ModelChecks.cpp"
-            "${KIT_ROOT}/app/scenarios/${CONFIG_KIT_SCENARIO}.cpp"
+            ${KIT_SCENARIO_SOURCES}
             "${KIT_ROOT}/app/src/CountingAllocator.cpp"
             "${KIT_ROOT}/app/src/HeapMonitor.cpp"
             ${KIT_MODEL_SOURCES}

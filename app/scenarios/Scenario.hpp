@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  Scenario.hpp
-// \brief  What a run plays after setup: one scenario per build
+// \brief  What a run plays after setup: every build holds every scenario
 //
-// CONFIG_KIT_SCENARIO names the file of app/scenarios/ that implements
-// run(); app/kit.cmake compiles that one. Every scenario drives the same
-// deployment through Session (ticks), the uplink (commands, as a ground
-// system would send them) and Report (the console record).
+// One file of app/scenarios/ per scenario, each defining its function
+// below; Scenarios.cpp lists them by name and picks the one to play: the
+// build's CONFIG_KIT_SCENARIO, or, with CONFIG_KIT_SCENARIO_AT_BOOT, the
+// name the console sends at boot (the suite plays every scenario on one
+// build that way). Every scenario drives the same deployment through
+// Session (ticks), the uplink (commands, as a ground system would send
+// them) and Report (the console record).
 // ======================================================================
 #ifndef KIT_SCENARIO_HPP
 #define KIT_SCENARIO_HPP
@@ -23,8 +26,25 @@ struct Context {
     const CountingAllocator& allocator;  //!< F´'s allocator
 };
 
-//! Play the scenario and print its record; true when every check passed
-bool run(const Context& context);
+//! A scenario plays and prints its record; true when every check passed
+using Play = bool (*)(const Context& context);
+
+bool playNominal(const Context& context);        //!< nominal.cpp
+bool playLoad(const Context& context);           //!< load.cpp
+bool playFaults(const Context& context);         //!< faults.cpp
+bool playSoak(const Context& context);           //!< soak.cpp
+bool playStackOverflow(const Context& context);  //!< stack_overflow.cpp
+bool playAssert(const Context& context);         //!< assert.cpp
+bool playGround(const Context& context);         //!< ground.cpp
+
+//! The scenario this run plays (Scenarios.cpp): the build's, or the one the
+//! console names at boot
+Play choose();
+
+//! The uplink script's frames, `count` of them, in static storage all
+//! scenarios share (one plays per boot): a local array of frames would cost
+//! the main stack, which on baremetal is every task's
+Uplink::Frame* scriptFrames(FwSizeType count);
 
 //! Command arguments, serialized as F´ does (big-endian)
 class Args {

@@ -25,7 +25,7 @@ constexpr U32 RUN_TICKS = 1000;
 constexpr U32 ASSERT_CODE = 42;  // travels as the assert's argument
 }  // namespace
 
-bool run(const Context& context) {
+bool playAssert(const Context& context) {
     (void)context;
     Uplink::Frame script[] = {
         noOpFrame(2),

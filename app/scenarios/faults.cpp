@@ -27,49 +27,47 @@ constexpr U32 OVERFLOW_BURST = 16;  // more than the load's queue holds
 constexpr FwIndexType FASTEST = 0;
 constexpr FwSizeType SCRIPT_FRAMES = 10;
 
-Uplink::Frame s_script[SCRIPT_FRAMES];
-
 // Built in its own frame, which is gone before the run starts: on baremetal
 // the main stack is every task's
-__attribute__((noinline)) void buildScript() {
+__attribute__((noinline)) void buildScript(Uplink::Frame* const script) {
     const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
     const U8 shortArgs[] = {0x00, 0x07};                        // an I32 needs 4 bytes
     const U8 garbage[] = {0xDE, 0xAD, 0xBE, 0xEF, 0x01, 0x02};  // not a command packet
     const U8 truncated[] = {0x00};                              // not even a descriptor
     const Fw::CmdResponse format = Fw::CmdResponse::FORMAT_ERROR;
     const Fw::CmdResponse invalid = Fw::CmdResponse::VALIDATION_ERROR;
-    // Into the static script frame by frame: a local array of frames would
-    // cost the main thread's stack (the sentinel caught that on rtos)
-    s_script[0] = command(2, 0x7FFF, Args());
-    s_script[0].expected = Fw::CmdResponse::INVALID_OPCODE;
-    s_script[1] = Uplink::commandFrame(3, setSetpoint, shortArgs, sizeof shortArgs);
-    s_script[1].expected = format;
+    // Into the shared static script frame by frame: a local array of frames
+    // would cost the main thread's stack (the sentinel caught that on rtos)
+    script[0] = command(2, 0x7FFF, Args());
+    script[0].expected = Fw::CmdResponse::INVALID_OPCODE;
+    script[1] = Uplink::commandFrame(3, setSetpoint, shortArgs, sizeof shortArgs);
+    script[1].expected = format;
     // Too long: the I32 and two stray bytes
-    s_script[2] = command(4, setSetpoint, Args().add(static_cast<I32>(1000)).add(static_cast<U16>(7)));
-    s_script[2].expected = format;
-    s_script[3] = Uplink::rawFrame(5, garbage, sizeof garbage, invalid);
-    s_script[4] = Uplink::rawFrame(6, truncated, sizeof truncated, invalid);
-    s_script[5] = noOpFrame(7);
-    s_script[6] =
+    script[2] = command(4, setSetpoint, Args().add(static_cast<I32>(1000)).add(static_cast<U16>(7)));
+    script[2].expected = format;
+    script[3] = Uplink::rawFrame(5, garbage, sizeof garbage, invalid);
+    script[4] = Uplink::rawFrame(6, truncated, sizeof truncated, invalid);
+    script[5] = noOpFrame(7);
+    script[6] =
         command(8, faults.getIdBase() + FaultsIds::OVERRUN, Args().add(static_cast<U8>(FASTEST)).add(OVERRUN_US));
-    s_script[7] =
-        command(9, load.getIdBase() + LoadIds::SET_BURST, Args().add(OVERFLOW_BURST).add(static_cast<U32>(0)));
-    s_script[8] =
+    script[7] = command(9, load.getIdBase() + LoadIds::SET_BURST, Args().add(OVERFLOW_BURST).add(static_cast<U32>(0)));
+    script[8] =
         command(11, load.getIdBase() + LoadIds::SET_BURST, Args().add(static_cast<U32>(0)).add(static_cast<U32>(0)));
-    s_script[9] = noOpFrame(12);
+    script[9] = noOpFrame(12);
 }
 
 }  // namespace
 
-bool run(const Context& context) {
-    buildScript();
-    uplink.play(s_script, SCRIPT_FRAMES);
+bool playFaults(const Context& context) {
+    Uplink::Frame* const script = scriptFrames(SCRIPT_FRAMES);
+    buildScript(script);
+    uplink.play(script, SCRIPT_FRAMES);
     Session::run(RUN_TICKS);
 
     // The record: the rate groups (slips expected in the fastest only), the
     // commands, and what each detection counted
     (void)Report::rateGroups(RUN_TICKS);
-    const bool answered = Report::commands(s_script, SCRIPT_FRAMES);
+    const bool answered = Report::commands(script, SCRIPT_FRAMES);
     const FwEventIdType dispBase = cmdDisp.getIdBase();
     const U32 invalidEvents = downlink.eventCount(dispBase + CmdDispIds::INVALID_COMMAND);
     const U32 malformedEvents = downlink.eventCount(dispBase + CmdDispIds::MALFORMED_COMMAND);

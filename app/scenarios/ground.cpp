@@ -42,7 +42,7 @@ Report::SweepPoint pointOf(const Timing::Segment& segment) {
 
 }  // namespace
 
-bool run(const Context& context) {
+bool playGround(const Context& context) {
     (void)context;
     timing.serveSegments(Session::hyperperiod());
     Report::linkReady();

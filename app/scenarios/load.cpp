@@ -115,7 +115,7 @@ void printBreaks(const Axis& axis, const U32 breakUs[]) {
 
 }  // namespace
 
-bool run(const Context& context) {
+bool playLoad(const Context& context) {
     bool commanded = true;
     U32 breakUs[FW_NUM_ARRAY_ELEMENTS(AXES)][RATE_GROUP_COUNT] = {};
     for (FwSizeType a = 0; a < FW_NUM_ARRAY_ELEMENTS(AXES); a++) {

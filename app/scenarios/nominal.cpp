@@ -15,27 +15,27 @@ namespace Scenario {
 
 namespace {
 constexpr FwSizeType SCRIPT_FRAMES = 3;
-Uplink::Frame s_script[SCRIPT_FRAMES];
 
 // At 10 Hz cycle 2 a NO_OP, then the controller's setpoint changed and
 // changed back: dispatch, arguments and events are all exercised. Built in
 // its own frame, gone before the run: on baremetal the main stack is every
 // task's.
-__attribute__((noinline)) void buildScript() {
+__attribute__((noinline)) void buildScript(Uplink::Frame* const script) {
     const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
-    s_script[0] = noOpFrame(2);
-    s_script[1] = command(4, setSetpoint, Args().add(static_cast<I32>(2000)));
-    s_script[2] = command(8, setSetpoint, Args().add(static_cast<I32>(1000)));
+    script[0] = noOpFrame(2);
+    script[1] = command(4, setSetpoint, Args().add(static_cast<I32>(2000)));
+    script[2] = command(8, setSetpoint, Args().add(static_cast<I32>(1000)));
 }
 }  // namespace
 
-bool run(const Context& context) {
-    buildScript();
-    uplink.play(s_script, SCRIPT_FRAMES);
+bool playNominal(const Context& context) {
+    Uplink::Frame* const script = scriptFrames(SCRIPT_FRAMES);
+    buildScript(script);
+    uplink.play(script, SCRIPT_FRAMES);
     Session::run(CONFIG_KIT_RUN_TICKS);
 
     const bool measured = Report::results(CONFIG_KIT_RUN_TICKS, context.probeCost, context.allocator);
-    const bool commanded = Report::commands(s_script, SCRIPT_FRAMES);
+    const bool commanded = Report::commands(script, SCRIPT_FRAMES);
     const bool downlinked = Report::downlinkAndTicks();
     Report::stacks();
     Report::queues();

@@ -29,7 +29,7 @@ constexpr U32 RUN_TICKS = 1000;
 constexpr U32 OVERFLOW_BYTES = 2048;
 }  // namespace
 
-bool run(const Context& context) {
+bool playStackOverflow(const Context& context) {
     (void)context;
     Uplink::Frame script[] = {
         noOpFrame(2),

@@ -3,8 +3,8 @@
 // \title  main.cpp
 // \brief  The kit's entry point, shared by both variants
 //
-// Boot banner, topology setup, then the scenario the build was made for
-// (app/scenarios/, CONFIG_KIT_SCENARIO), then the end line. Nothing prints
+// The scenario to play (the build's, or the console's at boot: app/scenarios/
+// Scenarios.cpp), boot banner, topology setup, the scenario, the end line. Nothing prints
 // while a segment is measured: printing while sampling disturbs what is
 // measured.
 // ======================================================================
@@ -26,6 +26,7 @@ Kit::CountingAllocator s_allocator;
 }  // namespace
 
 int main() {
+    const Kit::Scenario::Play play = Kit::Scenario::choose();
     Kit::Report::banner();
     Kit::Variant::prepareStacks();
     Os::init();
@@ -35,7 +36,7 @@ int main() {
     Kit::HeapMonitor::markInitialized();
     // The probe's own cost, measured before the run so it does not disturb it
     const Kit::Scenario::Context context = {Kit::timing.measureProbeCost(PROBE_CALIBRATION_PAIRS), s_allocator};
-    const bool passed = Kit::Scenario::run(context);
+    const bool passed = play(context);
     Kit::Report::end(passed);
     return 0;
 }

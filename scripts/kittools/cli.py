@@ -31,13 +31,17 @@ def _say(message: str) -> None:
     print(f"[kit] {message}", flush=True)
 
 
+#: What `kit compare` plays: the comparison run and the load sweep
+COMPARISON_SCENARIOS = ("nominal", "load")
+
+
 def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
-    """The comparison's scenarios (tag `compare` of tests/deployment: each
-    model's nominal run and load sweep) on every board, through twister;
+    """The comparison's scenarios (each model's nominal run and load sweep,
+    played on the suite's builds of tests/deployment) on every board, through twister;
     returns each board's results file and whether every run passed."""
     out_dir.mkdir(parents=True, exist_ok=True)
     twister_out = out_dir / "twister"
-    tally = testing.run_twister(boards, out_dir, twister_out, tags=("compare",))
+    tally = testing.run_twister(boards, out_dir, twister_out, scenarios=COMPARISON_SCENARIOS)
     files = []
     for board in boards:
         data = results.from_twister(twister_out, board)

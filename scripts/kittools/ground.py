@@ -23,7 +23,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from .runner import Qemu, cache_value, ends_run
+from .runner import Qemu, asks_at_boot, cache_value, ends_run
 from .workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 BOOT_TIMEOUT_S = 60.0
@@ -78,7 +78,7 @@ def boot(link: Link) -> Qemu:
     decode its packets as some other build's events and channels). On any
     error QEMU is stopped."""
     _check_socket_free(link.socket)
-    qemu = Qemu(link.build_dir)
+    qemu = Qemu(link.build_dir, "ground")
     try:
         qemu.read_until(lambda line: line.startswith(LINK_READY) or ends_run(line), BOOT_TIMEOUT_S)
         ready = next((line for line in qemu.lines if line.startswith(LINK_READY)), None)
@@ -146,9 +146,10 @@ class GroundStation:
     def __init__(self, build_dir: Path, logs: Path, gui: bool = False, gui_port: int = 5000,
                  dictionary: Path | None = None) -> None:
         self.link = link_of(build_dir, dictionary)
-        if scenario_of(build_dir) != "ground":
-            raise KitError(f"{build_dir} does not play the ground scenario (CONFIG_KIT_SCENARIO_GROUND=y): "
-                           "its firmware would not wait for the ground")
+        if not serves_ground(build_dir):
+            raise KitError(f"{build_dir} does not play the ground scenario (CONFIG_KIT_SCENARIO_GROUND=y, or "
+                           "CONFIG_KIT_SCENARIO_AT_BOOT=y to choose it at boot): its firmware would not wait for "
+                           "the ground")
         if shutil.which("fprime-gds", path=environment().get("PATH")) is None:
             raise KitError("fprime-gds is not installed: run scripts/setup.sh (it installs the pinned fprime-gds)")
         self.logs = logs
@@ -245,6 +246,7 @@ def build_ground(board: str, model: str, log: Path) -> Path:
     return build_dir
 
 
-def ground_builds(twister_out: Path) -> list[Path]:
-    """The ground scenario's builds twister made (kit.ground.*, build only)."""
-    return sorted(elf.parent.parent for elf in twister_out.glob("**/kit.ground.*/zephyr/zephyr.elf"))
+def serves_ground(build_dir: Path) -> bool:
+    """The build can play the ground scenario: it asks for its scenario at
+    boot (the suite's builds), or it was built for this one."""
+    return asks_at_boot(build_dir) or scenario_of(build_dir) == "ground"

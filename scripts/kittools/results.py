@@ -72,6 +72,31 @@ def twister_build(twister_out: Path, platform: str, scenario: str) -> Path:
     return builds[0]
 
 
+#: Where the suite's pytest harness keeps each scenario's console, per build
+#: (tests/deployment/pytest/test_scenarios.py): <build>/kit-runs/<scenario>.log
+RUNS_DIR = "kit-runs"
+
+
+#: Records of the scenario's choice at boot (app/scenarios/Scenarios.cpp)
+BOOT_KINDS = ("SELECT", "SCENARIO")
+
+
+def run_log(build: Path, scenario: str) -> Path:
+    return build / RUNS_DIR / f"{scenario}.log"
+
+
+def played(build: Path, scenario: str) -> console.Run | None:
+    """The records of a scenario the suite played on a build, or None when it
+    did not play it (a `kit compare` run plays two)."""
+    log = run_log(build, scenario)
+    if not log.is_file():
+        return None
+    text = log.read_text(errors="replace")
+    # The SELECT lines are the prompt's, before the run: not the run's records
+    return console.Run([r for r in (console.parse_line(line) for line in text.splitlines())
+                        if r is not None and r.kind not in BOOT_KINDS])
+
+
 # Kinds of record the load scenario adds to a variant's results (the sweep)
 SWEEP_KINDS = ("SWEEP", "BREAK")
 
@@ -81,13 +106,19 @@ def _same_board(platform: str, board: str) -> bool:
     return platform == board or platform.startswith(board + "/")
 
 
-def _recorded(suite: dict[str, Any]) -> console.Run:
-    run = console.Run()
-    for record in suite.get("recording") or []:
-        parsed = console.parse_line(f"KIT {record.get('kind', '')} {record.get('fields', '')}")
-        if parsed is not None:
-            run.records.append(parsed)
-    return run
+def suite_builds(twister_out: Path, board: str | None = None) -> list[tuple[str, Path]]:
+    """(platform, build folder) of every configuration of the suite twister
+    built (one per execution model and board), on `board` or on all."""
+    report = twister_out / "twister.json"
+    if not report.is_file():
+        raise KitError(f"no twister report at {report}")
+    found = []
+    for suite in json.loads(report.read_text()).get("testsuites", []):
+        platform, name = suite.get("platform", ""), suite.get("name", "").rsplit("/", 1)[-1]
+        if (board is None or _same_board(platform, board)) and name.startswith("kit.") \
+                and suite.get("status") not in ("filtered", "skipped"):
+            found.append((platform, twister_build(twister_out, platform, name)))
+    return sorted(found, key=lambda pair: (pair[0], pair[1].name))
 
 
 def integration_logs(log_dir: Path, platform: str, build_name: str) -> Path:
@@ -101,31 +132,21 @@ SERIAL_SWEEP_FILE = "serial.json"
 
 def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> model.Results:
     """Results of a twister run of tests/deployment on one board, in the
-    results-file schema: the nominal scenario's records (kit.deployment.*),
-    footprint and modules from its build, plus the sweep records of the load
-    scenario (kit.load.*) of the same variant when it ran, and those of the
-    serial-load sweep `kit test` ran on its ground build (under `log_dir`)."""
-    report = twister_out / "twister.json"
-    if not report.is_file():
-        raise KitError(f"no twister report at {report}")
-    suites = [s for s in json.loads(report.read_text()).get("testsuites", [])
-              if _same_board(s.get("platform", ""), board) and s.get("recording")]
-    sweeps = {s["name"].rsplit(".", 1)[-1]: _recorded(s) for s in suites
-              if s["name"].rsplit("/", 1)[-1].startswith("kit.load.")}
+    results-file schema: per build (one per variant), the nominal scenario's
+    records, footprint and modules, plus the sweep records of the load
+    scenario when it played, and those of the serial-load sweep `kit test`
+    ran on the build (under `log_dir`)."""
     found: list[compare.VariantData] = []
-    for suite in suites:
-        scenario = suite["name"].rsplit("/", 1)[-1]
-        if not scenario.startswith("kit.deployment."):
+    for platform, build in suite_builds(twister_out, board):
+        run = played(build, "nominal")
+        if run is None or not run.of_kind("BANNER"):
             continue
-        run = _recorded(suite)
-        sweep = sweeps.get(run.variant)
+        sweep = played(build, "load")
         if sweep is not None:
             run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
-        serial = integration_logs(log_dir, suite["platform"], f"kit.ground.{run.variant}") / SERIAL_SWEEP_FILE \
-            if log_dir is not None else None
+        serial = integration_logs(log_dir, platform, build.name) / SERIAL_SWEEP_FILE if log_dir is not None else None
         if serial is not None and serial.is_file():
             run.records += serial_sweep.records_of(serial)
-        build = twister_build(twister_out, suite["platform"], scenario)
         rom, ram = modules.report(build, "rom"), modules.report(build, "ram")
         found.append(compare.VariantData(
             run.variant, measure(build), run, modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
@@ -133,6 +154,7 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
              for kind, report in (("rom", rom), ("ram", ram))},
             sizing.measure(build, [r.fields for r in run.of_kind("QUEUE")]).to_json()))
     if not found:
-        raise KitError(f"twister run in {twister_out} has no recorded kit.deployment scenario for {board}")
+        raise KitError(f"twister run in {twister_out} played no nominal scenario on {board} "
+                       f"(no {RUNS_DIR}/nominal.log in its builds)")
     found.sort(key=lambda d: d.variant)
     return compare.results(found)

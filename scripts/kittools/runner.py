@@ -36,6 +36,17 @@ def cache_value(build_dir: Path, name: str) -> str | None:
     return match.group(1) if match else None
 
 
+def asks_at_boot(build_dir: Path) -> bool:
+    """The build asks for its scenario on the console at boot
+    (CONFIG_KIT_SCENARIO_AT_BOOT: every build of the suite)."""
+    config = build_dir / "zephyr" / ".config"
+    return config.is_file() and "\nCONFIG_KIT_SCENARIO_AT_BOOT=y\n" in config.read_text()
+
+
+#: The line a build that asks at boot prints before it reads the name
+SELECT_PROMPT = "KIT SELECT scenarios="
+
+
 def qemu_pipe(build_dir: Path) -> Path | None:
     """The FIFO a twister build sends its console to (QEMU_PIPE in its CMake
     cache: QEMU reads <pipe>.in and writes <pipe>.out), or None: a plain
@@ -83,16 +94,20 @@ def halt_lines(lines: list[str], most: int = 12) -> str:
 class Qemu:
     """The build's `run` target (QEMU) in the background, its console read
     line by line from the build's QEMU pipe (a twister build) or from stdio.
-    A context manager: leaving it stops QEMU (its whole process group)."""
+    A build that asks for its scenario at boot is answered `scenario` at its
+    prompt. A context manager: leaving it stops QEMU (its whole process
+    group)."""
 
-    def __init__(self, build_dir: Path) -> None:
+    def __init__(self, build_dir: Path, scenario: str = "nominal") -> None:
         self.build_dir = build_dir
         self.lines: list[str] = []
         self._partial = b""
+        self._answer: str | None = scenario if asks_at_boot(build_dir) else None
         pipe = qemu_pipe(build_dir)
         self._pipe_fds = _open_pipe(pipe) if pipe is not None else None
         self._process = subprocess.Popen(
-            run_command(build_dir), cwd=KIT_ROOT, env=environment(), stdin=subprocess.DEVNULL,
+            run_command(build_dir), cwd=KIT_ROOT, env=environment(),
+            stdin=subprocess.PIPE if self._answer is not None and self._pipe_fds is None else subprocess.DEVNULL,
             stdout=subprocess.DEVNULL if self._pipe_fds else subprocess.PIPE, stderr=subprocess.STDOUT,
             start_new_session=True)
         if self._pipe_fds is not None:
@@ -134,6 +149,9 @@ class Qemu:
             for raw in complete:
                 line = raw.decode(errors="replace").rstrip("\r")
                 self.lines.append(line)
+                if self._answer is not None and line.startswith(SELECT_PROMPT):
+                    self._send(f"{self._answer}\n")
+                    self._answer = None  # once: a refused name shows as a second prompt
                 found = found or done(line)
             if found:
                 return True
@@ -141,6 +159,14 @@ class Qemu:
 
     def text(self) -> str:
         return "\n".join(self.lines)
+
+    def _send(self, text: str) -> None:
+        """Bytes to the console: the pipe's input FIFO, or QEMU's stdin."""
+        if self._pipe_fds is not None:
+            os.write(self._pipe_fds[1], text.encode())
+        elif self._process.stdin is not None:
+            self._process.stdin.write(text.encode())
+            self._process.stdin.flush()
 
     def stop(self) -> None:
         self._selector.close()
@@ -166,10 +192,11 @@ def _reap_group(group: int, timeout_s: float = 5.0) -> None:
         time.sleep(0.05)
 
 
-def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S) -> str:
+def run(build_dir: Path, log: Path, timeout_s: float = RUN_TIMEOUT_S, scenario: str = "nominal") -> str:
     """Run the build's `run` target (QEMU) until the firmware's end line or a
-    fatal report, then stop QEMU. Returns the console text."""
-    with Qemu(build_dir) as qemu:
+    fatal report, then stop QEMU; a build that asks for its scenario at boot
+    plays `scenario`. Returns the console text."""
+    with Qemu(build_dir, scenario) as qemu:
         finished = qemu.read_until(ends_run, timeout_s)
     text = qemu.text()
     log.write_text(text + "\n")

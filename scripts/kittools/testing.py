@@ -42,16 +42,19 @@ def _run(command: list[str], log: Path, cwd: Path = KIT_ROOT) -> int:
 
 
 def twister_tally(path: Path) -> Tally:
-    """Count twister's test cases: passed, or failed (failed, error, blocked)."""
+    """Count twister's test cases (each scenario a build played, with the
+    pytest harness): passed, or failed (failed, error, blocked). A
+    configuration that reports no case counts once, by its own status."""
     if not path.is_file():
         raise KitError(f"twister wrote no report at {path}")
     tally = Tally()
     for suite in json.loads(path.read_text()).get("testsuites", []):
-        status = suite.get("status")
-        if status == "passed":
-            tally.passed += 1
-        elif status in ("failed", "error", "blocked"):
-            tally.failed += 1
+        statuses = [case.get("status") for case in suite.get("testcases") or []] or [suite.get("status")]
+        for status in statuses:
+            if status == "passed":
+                tally.passed += 1
+            elif status in ("failed", "error", "blocked"):
+                tally.failed += 1
     return tally
 
 
@@ -133,8 +136,9 @@ def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None
 
 
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
-                tags: tuple[str, ...] = ()) -> Tally:
-    """The suite (tests/) on every board, or its scenarios with one of `tags`,
+                scenarios: tuple[str, ...] = ()) -> Tally:
+    """The suite (tests/) on every board: one build per execution model and
+    board, each playing every scenario, or only `scenarios` (pytest's -k);
     two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
@@ -142,8 +146,8 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
                "--outdir", str(out_dir), "--overflow-as-errors"]
     for platform in platforms:
         command += ["-p", platform]
-    for tag in tags:
-        command += ["-t", tag]
+    if scenarios:
+        command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
     code = _run_streamed(command, log_dir / "twister.log", TwisterProgress().line)
     tally = twister_tally(out_dir / "twister.json")
     if code != 0 and tally.failed == 0:
@@ -151,42 +155,42 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     return tally
 
 
-def recorded_hashes(path: Path) -> dict[tuple[str, str], str]:
-    """(platform, scenario) -> the sample hash twister recorded (KIT HASH line)."""
-    hashes: dict[tuple[str, str], str] = {}
-    for suite in json.loads(path.read_text()).get("testsuites", []):
-        for record in suite.get("recording") or []:
-            if record.get("kind") == "HASH":
-                parsed = console.parse_line(f"KIT HASH {record.get('fields', '')}")
-                if parsed is not None and "fnv" in parsed.fields:
-                    hashes[(suite["platform"], suite["name"].rsplit("/", 1)[-1])] = parsed.fields["fnv"]
+def recorded_hashes(twister_out: Path) -> dict[tuple[str, Path, str], str]:
+    """(platform, build, scenario) -> the sample hash (KIT HASH line) of each
+    scenario the suite played, from its console log (results.run_log)."""
+    hashes: dict[tuple[str, Path, str], str] = {}
+    for platform, build in results.suite_builds(twister_out):
+        for log in sorted((build / results.RUNS_DIR).glob("*.log")):
+            run = results.played(build, log.stem)
+            if run is not None and run.of_kind("HASH") and "fnv" in run.one("HASH").fields:
+                hashes[(platform, build, log.stem)] = run.one("HASH").fields["fnv"]
     return hashes
 
 
 def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
-    """Run each twister-built binary that ended normally once more under
-    QEMU, `jobs` at a time, through the build's own run target (the console
-    from its QEMU pipe): under icount the raw timing samples, and so their
-    hash, must be identical to what twister recorded."""
-    runs = [(platform, scenario, expected)
-            for (platform, scenario), expected in sorted(recorded_hashes(TWISTER_OUT / "twister.json").items())
+    """Play each scenario that printed a sample hash once more on its build
+    under QEMU, `jobs` at a time, through the build's own run target (the
+    console from its QEMU pipe): under icount the raw timing samples, and so
+    their hash, must be identical to the suite's run."""
+    runs = [(platform, build, scenario, expected)
+            for (platform, build, scenario), expected in sorted(recorded_hashes(TWISTER_OUT).items())
             # the soak: ten more virtual minutes per board; it checks itself
-            if not scenario.startswith("kit.soak.")]
+            if scenario != "soak"]
     if not runs:
-        raise KitError("twister recorded no sample hash: nothing to compare")
+        raise KitError("the suite recorded no sample hash: nothing to compare")
 
-    def rerun(platform: str, scenario: str) -> str | None:
-        build = results.twister_build(TWISTER_OUT, platform, scenario)
-        text = runner.run(build, log_dir / f"{platform.replace('/', '_')}.{scenario}.rerun.log")
+    def rerun(platform: str, build: Path, scenario: str) -> str | None:
+        log = log_dir / f"{platform.replace('/', '_')}.{build.name}.{scenario}.rerun.log"
+        text = runner.run(build, log, scenario=scenario)
         return console.parse(text).one("HASH").fields.get("fnv")
 
     tally = Tally()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(rerun, platform, scenario) for platform, scenario, _ in runs]
-        for (platform, scenario, expected), future in zip(runs, futures, strict=True):
+        futures = [pool.submit(rerun, platform, build, scenario) for platform, build, scenario, _ in runs]
+        for (platform, build, scenario, expected), future in zip(runs, futures, strict=True):
             again = future.result()
             same = again == expected
-            print(f"[kit]   {platform} {scenario}: sample hash {expected}, then {again}: "
+            print(f"[kit]   {platform} {build.name} {scenario}: sample hash {expected}, then {again}: "
                   f"{'identical' if same else 'DIFFERENT'}", flush=True)
             tally.add(Tally(passed=1) if same else Tally(failed=1))
     return tally
@@ -197,17 +201,18 @@ INTEGRATION = KIT_ROOT / "tests" / "integration"
 
 def run_integration(log_dir: Path) -> Tally:
     """tests/integration (F´'s integration-test API, through fprime-gds's
-    pytest plugin) against every ground build twister made, one at a time:
-    each booted under QEMU with fprime-gds on its link (kittools.ground).
-    The kit's own runner, not twister's pytest harness: that harness owns
-    one console and knows nothing of a second serial port or a GDS."""
-    builds = ground.ground_builds(TWISTER_OUT)
+    pytest plugin) against every build of the suite, one at a time: each
+    booted under QEMU into its ground scenario with fprime-gds on its link
+    (kittools.ground). The kit's own runner, not twister's pytest harness:
+    that harness owns one console and knows nothing of a second serial port
+    or a GDS."""
+    builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
+              if ground.serves_ground(build)]
     if not builds:
-        raise KitError(f"twister built no ground scenario (kit.ground.*) under {TWISTER_OUT}")
+        raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
     tally = Tally()
-    for build in builds:
-        platform = build.relative_to(TWISTER_OUT).parts[0]
-        name = f"{platform}_{build.name}"
+    for platform, build in builds:
+        name = f"{platform.replace('/', '_')}_{build.name}"
         logs = results.integration_logs(log_dir, platform, build.name)
         xml = logs / "pytest.xml"
         started = time.monotonic()

@@ -30,17 +30,35 @@ def test_every_model_folder_has_its_files_and_its_choice_entry():
         assert f'default "{model}"' in kconfig  # KIT_MODEL_NAME: the folder the build includes
 
 
+SCENARIOS_DIR = KIT_ROOT / "app" / "scenarios"
+#: The file of app/scenarios/ that lists and chooses the others
+CHOOSER = "Scenarios"
+
+
+def _scenario_sources() -> set[str]:
+    return {p.stem for p in SCENARIOS_DIR.glob("*.cpp")} - {CHOOSER}
+
+
 def test_every_scenario_choice_has_its_source_and_back():
-    kconfig = (KIT_ROOT / "app" / "scenarios" / "Kconfig").read_text()
-    choices = _choice_entries(kconfig, "KIT_SCENARIO_")
-    sources = {p.stem for p in (KIT_ROOT / "app" / "scenarios").glob("*.cpp")}
+    kconfig = (SCENARIOS_DIR / "Kconfig").read_text()
+    choices = _choice_entries(kconfig, "KIT_SCENARIO_") - {"at_boot"}
+    sources = _scenario_sources()
     assert choices == sources
     for name in sources:
         assert f'default "{name}" if KIT_SCENARIO_{name.upper()}' in kconfig
 
 
+def test_the_boot_choice_lists_every_scenario_and_the_suite_plays_them():
+    table = set(re.findall(r'\{"(\w+)", play\w+\}', (SCENARIOS_DIR / f"{CHOOSER}.cpp").read_text()))
+    assert table == _scenario_sources()
+    suite = (KIT_ROOT / "tests" / "deployment" / "pytest" / "test_scenarios.py").read_text()
+    played = set(re.findall(r'"(\w+)"', re.search(r"^SCENARIOS = \((.*)\)$", suite, re.MULTILINE).group(1)))
+    # Every scenario but the ground link's, which `kit test` plays with fprime-gds
+    assert played == table - {"ground"}
+
+
 def test_twister_files_choose_only_existing_models_and_scenarios():
-    scenarios = {p.stem for p in (KIT_ROOT / "app" / "scenarios").glob("*.cpp")}
+    scenarios = _scenario_sources() | {"at_boot"}
     for path in (KIT_ROOT / "app" / "sample.yaml", KIT_ROOT / "tests" / "deployment" / "testcase.yaml"):
         for name, test in yaml.safe_load(path.read_text())["tests"].items():
             configs = test.get("extra_configs", [])

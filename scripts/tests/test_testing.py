@@ -37,17 +37,41 @@ def test_junit_tally_handles_testsuites_root(tmp_path):
     assert (tally.passed, tally.failed) == (2, 2)
 
 
-def test_recorded_hashes_reads_twister_recordings(tmp_path):
+def _suite_build(twister_out, platform, name, logs):
+    """A twister build of the suite, as the pytest harness leaves it: its
+    ELF and each played scenario's console in kit-runs/."""
+    build = twister_out / platform.replace("/", "_") / "tests" / "deployment" / name
+    (build / "zephyr").mkdir(parents=True)
+    (build / "zephyr" / "zephyr.elf").write_bytes(b"")
+    (build / "kit-runs").mkdir()
+    for scenario, text in logs.items():
+        (build / "kit-runs" / f"{scenario}.log").write_text(text)
+    return build
+
+
+def test_recorded_hashes_read_each_played_scenario_log(tmp_path):
+    rtos = _suite_build(tmp_path, "mps2/an385", "kit.rtos", {
+        "nominal": "KIT SELECT scenarios=nominal\nKIT RG name=rg1kHz\nKIT HASH samples=10 fnv=0xdeadbeef\n",
+        "assert": "KIT HALT reason=kernel_panic\n"})
+    bare = _suite_build(tmp_path, "qemu_cortex_m3/ti_lm3s6965", "kit.baremetal", {
+        "faults": "KIT HASH samples=10 fnv=0x00c0ffee\n"})
+    (tmp_path / "twister.json").write_text(json.dumps({"testsuites": [
+        {"name": "tests/deployment/kit.rtos", "platform": "mps2/an385", "status": "passed"},
+        {"name": "tests/deployment/kit.baremetal", "platform": "qemu_cortex_m3/ti_lm3s6965", "status": "failed"},
+        {"name": "tests/deployment/kit.rtos", "platform": "qemu_cortex_m3/ti_lm3s6965", "status": "filtered"},
+    ]}))
+    assert testing.recorded_hashes(tmp_path) == {("mps2/an385", rtos, "nominal"): "0xdeadbeef",
+                                                 ("qemu_cortex_m3/ti_lm3s6965", bare, "faults"): "0x00c0ffee"}
+
+
+def test_twister_tally_counts_a_pytest_configuration_per_scenario(tmp_path):
     report = tmp_path / "twister.json"
     report.write_text(json.dumps({"testsuites": [
-        {"name": "deployment/kit.deployment.rtos", "platform": "mps2/an385", "recording": [
-            {"kind": "RG", "fields": "name=rg1kHz"}, {"kind": "HASH", "fields": "samples=10 fnv=0xdeadbeef"}]},
-        {"name": "deployment/kit.deployment.rtos", "platform": "qemu_cortex_m3/ti_lm3s6965", "recording": [
-            {"kind": "HASH", "fields": "samples=10 fnv=0x00c0ffee"}]},
-        {"name": "deployment/other", "platform": "mps2/an385", "recording": None},
+        {"status": "failed", "testcases": [{"status": "passed"}, {"status": "failed"}, {"status": "passed"}]},
+        {"status": "error", "testcases": [{"status": "blocked"}, {"status": "blocked"}]},
     ]}))
-    assert testing.recorded_hashes(report) == {("mps2/an385", "kit.deployment.rtos"): "0xdeadbeef",
-                                               ("qemu_cortex_m3/ti_lm3s6965", "kit.deployment.rtos"): "0x00c0ffee"}
+    tally = testing.twister_tally(report)
+    assert (tally.passed, tally.failed) == (2, 3)
 
 
 def test_the_suite_boards_are_its_platform_allow_list(tmp_path):

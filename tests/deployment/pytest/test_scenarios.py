@@ -1,0 +1,215 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Every scenario of the suite, played on one build per execution model and
+board (twister's pytest harness, tests/deployment/testcase.yaml).
+
+Each test boots the build under QEMU (the `dut` fixture: a fresh boot per
+test), sends the scenario's name on the console (the firmware asks at boot:
+CONFIG_KIT_SCENARIO_AT_BOOT, app/scenarios/Scenarios.cpp) and reads the
+console until the run's end line or its fatal report. The lines must match
+the scenario's expectations below, in order. Every console line is kept in
+<build>/kit-runs/<scenario>.log: `scripts/kit` reads its results from there.
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from pathlib import Path
+
+import pytest
+from twister_harness import DeviceAdapter
+from twister_harness.exceptions import TwisterHarnessTimeoutException
+
+# A line that ends a run: the end line, the kit's halt line, or the halt
+# marker every fatal path prints last (app/src/Fatal.cpp)
+END = re.compile(r"^KIT (END|HALT) |PROJECT EXECUTION FAILED")
+SELECT = re.compile(r"^KIT SELECT scenarios=")
+RUNS = "kit-runs"
+
+# Seconds of host time a scenario may take (the soak: ten virtual minutes)
+TIMEOUT_S = {"soak": 900.0}
+DEFAULT_TIMEOUT_S = 180.0
+
+# The comparison run. In order: the banner (variant, board, 1 kHz tick,
+# icount), every rate group ran exactly the cycles its divider gives (the
+# firmware prints both, the regex requires them equal) with zero slips
+# (baremetal's 1 kHz group: the firmware fails the run on a slip where the
+# board expects the model to hold it, CONFIG_KIT_DEADLINES_EXPECTED;
+# mps2/an385 measures that it cannot, and the budget gate holds it to its
+# baseline), nothing was allocated after init, the uplinked NO_OP completed
+# OK and its event reached the downlink, the 1 kHz group's queue held at most
+# the one pending cycle, or two where it slipped (its QUEUE line: the sizing
+# advice reads every queue's high-water mark from these), and the verdict.
+def _nominal(variant: str, fast_slips: str) -> list[str]:
+    return [
+        rf"KIT BANNER variant={variant} board=\S+ .* tick_hz=1000 .* icount_shift=[1-9]",
+        rf"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
+        r"KIT RG name=rg100Hz hz=100 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
+        r"KIT RG name=rg10Hz hz=10 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
+        r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
+        r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
+        r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",
+        r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12]$",
+    ]
+
+
+# Faults the system must survive: each malformed command answered with its
+# error, the injected overrun detected as a slip of the 1 kHz group only (and
+# as its event), the overflowed load queue's drops counted and reported,
+# every cycle still completed, a later NO_OP still OK.
+FAULTS = [
+    r"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips=[1-9]",
+    r"KIT CMD frame=0 .* response=INVALID_OPCODE expected=INVALID_OPCODE",
+    r"KIT CMD frame=1 .* response=FORMAT_ERROR expected=FORMAT_ERROR",
+    r"KIT CMD frame=2 .* response=FORMAT_ERROR expected=FORMAT_ERROR",
+    r"KIT CMD frame=3 .* response=VALIDATION_ERROR expected=VALIDATION_ERROR",
+    r"KIT CMD frame=4 .* response=VALIDATION_ERROR expected=VALIDATION_ERROR",
+    r"KIT CMD frame=9 .* noop=yes response=OK",
+    r"KIT FAULTS invalid_opcode_events=[1-9][0-9]* malformed_events=[2-9][0-9]* opcode_error_events=[2-9][0-9]* "
+    r"slips=[1-9][0-9]* slip_events=[1-9][0-9]* other_slips=0 load_dropped=[1-9][0-9]* drop_events=[1-9][0-9]* "
+    r"cycles_complete=yes",
+    r"KIT END variant=\w+ result=PASS",
+]
+
+# Ten minutes of virtual time: no slip (the firmware's verdict where the
+# board expects the model to hold its deadlines), every NO_OP answered,
+# nothing allocated after init, stack high-water marks flat after minute one.
+def _soak(variant: str, slips: str) -> list[str]:
+    return [
+        rf"KIT SOAK minute=1 slips={slips} cycles_complete=yes .* noop=OK",
+        rf"KIT SOAK minute=10 slips={slips} cycles_complete=yes .* stack_flat=yes .* heap_after_init=0 noop=OK",
+        rf"KIT END variant={variant} result=PASS",
+    ]
+
+
+# Fatal faults: the run must end in the fatal report, at once (the kit's
+# halt line, not a time-out)
+def _stack_overflow(context: str, first: str) -> list[str]:
+    return [first, rf"KIT HALT reason=stack_overflow code=2 context={context} expected=yes"]
+
+
+BAREMETAL_STACK_FAULT = r"KIT FATAL stack=main guard_word=[0-9]+ address=0x[0-9a-f]+: stack overflow"
+ASSERT = [
+    r'Assert: "app/Components/Faults/Faults.cpp:[0-9]+" 42',
+    r"KIT FATAL event=0x[0-9a-f]+",
+    r"KIT HALT reason=kernel_panic code=4 context=\w+ expected=yes",
+]
+
+# Background-load sweep: at zero load no group misses a deadline; the
+# cooperative loop must break its 1 kHz group within the sweep (a slice
+# longer than the period cannot be preempted), the preemptive one must not;
+# no load message is dropped. The budgeted policy defers what does not fit
+# before the next tick and may shed load (counted per point); where it
+# breaks is the result, asserted only to be in range.
+EXPECTED: dict[str, dict[str, list[str]]] = {
+    "baremetal": {
+        "nominal": [*_nominal("baremetal", "[0-9]+"), r"KIT END variant=baremetal result=PASS"],
+        "load": [
+            r"KIT BANNER variant=baremetal ",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz ",
+            r"KIT BREAK axis=slice rg=rg1kHz level=[0-9]+ unit=us$",
+            r"KIT LOAD commands=OK .* dropped=0",
+            r"KIT END variant=baremetal result=PASS",
+        ],
+        "faults": FAULTS,
+        "soak": _soak("baremetal", "[0-9]+"),
+        "stack_overflow": _stack_overflow("main", BAREMETAL_STACK_FAULT),
+        "assert": ASSERT,
+    },
+    "baremetal_budgeted": {
+        "nominal": [
+            *_nominal("baremetal_budgeted", "[0-9]+"),
+            r"KIT SCHED name=rg1kHz critical=yes anticipated=[1-9][0-9]* deferrals=0 ",
+            r"KIT SCHED name=guard guard=[1-9][0-9]* guard_max=[1-9][0-9]*",
+            r"KIT END variant=baremetal_budgeted result=PASS",
+        ],
+        "load": [
+            r"KIT BANNER variant=baremetal_budgeted ",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz .* load_dropped=0",
+            r"KIT BREAK axis=slice rg=rg1kHz level=([0-9]+|none) unit=us$",
+            r"KIT LOAD commands=OK ",
+            r"KIT SCHED name=rg1kHz critical=yes ",
+            r"KIT END variant=baremetal_budgeted result=PASS",
+        ],
+        "faults": FAULTS,
+        "soak": _soak("baremetal_budgeted", "[0-9]+"),
+        "stack_overflow": _stack_overflow("main", BAREMETAL_STACK_FAULT),
+        "assert": ASSERT,
+    },
+    "rtos": {
+        "nominal": [*_nominal("rtos", "0"), r"KIT END variant=rtos result=PASS"],
+        "load": [
+            r"KIT BANNER variant=rtos ",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz .* slips=0 late_starts=0 ",
+            r"KIT BREAK axis=slice rg=rg1kHz level=none unit=us",
+            r"KIT LOAD commands=OK .* dropped=0",
+            r"KIT END variant=rtos result=PASS",
+        ],
+        "faults": FAULTS,
+        "soak": _soak("rtos", "0"),
+        "stack_overflow": _stack_overflow("cmdDisp", r"ZEPHYR FATAL ERROR 2: Stack overflow"),
+        "assert": ASSERT,
+    },
+}
+SCENARIOS = ("nominal", "load", "faults", "soak", "stack_overflow", "assert")
+
+
+def config_value(build_dir: Path, name: str) -> str:
+    """A string option of the build's Kconfig (zephyr/.config)."""
+    match = re.search(rf'^{name}="([^"]*)"$', (build_dir / "zephyr" / ".config").read_text(), re.MULTILINE)
+    assert match, f"{build_dir} has no {name}"
+    return match.group(1)
+
+
+def unmatched(lines: list[str], expected: list[str]) -> list[str]:
+    """The expectations the lines do not meet, in order (each on a later line
+    than the one before it): [] when all are met."""
+    position = 0
+    for index, pattern in enumerate(expected):
+        regex = re.compile(pattern)
+        while position < len(lines) and not regex.search(lines[position]):
+            position += 1
+        if position == len(lines):
+            return expected[index:]
+        position += 1
+    return []
+
+
+def read_until_end(dut: DeviceAdapter, timeout_s: float) -> tuple[list[str], bool]:
+    """Console lines until a run's end (True) or `timeout_s` (False)."""
+    lines: list[str] = []
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        try:
+            line = dut.readline(timeout=min(5.0, max(0.1, deadline - time.monotonic())), print_output=False)
+        except TwisterHarnessTimeoutException:
+            continue
+        lines.append(line.rstrip("\r\n"))
+        if END.search(lines[-1]):
+            return lines, True
+    return lines, False
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_scenario(dut: DeviceAdapter, scenario: str) -> None:
+    build = Path(dut.device_config.build_dir)
+    variant = config_value(build, "CONFIG_KIT_VARIANT_NAME")
+    expected = EXPECTED[variant][scenario]
+    prompt, asked = [], False
+    deadline = time.monotonic() + DEFAULT_TIMEOUT_S
+    while not asked and time.monotonic() < deadline:
+        try:
+            prompt.append(dut.readline(timeout=5.0, print_output=False).rstrip("\r\n"))
+        except TwisterHarnessTimeoutException:
+            continue
+        asked = bool(SELECT.search(prompt[-1]))
+    assert asked, f"the firmware never asked for a scenario (CONFIG_KIT_SCENARIO_AT_BOOT): {prompt[-5:]}"
+    dut.write(f"{scenario}\n".encode())
+    lines, ended = read_until_end(dut, TIMEOUT_S.get(scenario, DEFAULT_TIMEOUT_S))
+    runs = build / RUNS
+    runs.mkdir(exist_ok=True)
+    (runs / f"{scenario}.log").write_text("\n".join(prompt + lines) + "\n")
+    missing = unmatched(lines, expected)
+    tail = "\n".join(lines[-15:])
+    assert ended, f"{variant} {scenario}: no end line within the time-out; last lines:\n{tail}"
+    assert not missing, f"{variant} {scenario}: not found, in order: {missing}; last lines:\n{tail}"
