@@ -9,6 +9,7 @@ import json
 import re
 import subprocess
 import sys
+import threading
 import time
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
@@ -135,6 +136,40 @@ def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None
         return process.wait()
 
 
+class RunWatcher:
+    """While twister runs, one line per scenario a build finished playing (its
+    console log appearing in <build>/kit-runs/): a configuration plays for
+    minutes, and twister says nothing until all its scenarios are done."""
+
+    def __init__(self, out_dir: Path, period_s: float = 2.0) -> None:
+        self._out_dir = out_dir
+        self._period_s = period_s
+        self._started = time.time()
+        self._seen: set[Path] = set()
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._watch, daemon=True)
+
+    def __enter__(self) -> RunWatcher:
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._stop.set()
+        self._thread.join()
+
+    def _watch(self) -> None:
+        while not self._stop.wait(self._period_s):
+            for log in sorted(self._out_dir.glob(f"*/**/{results.RUNS_DIR}/*.log")):
+                if log in self._seen or log.stat().st_mtime < self._started:
+                    continue
+                self._seen.add(log)
+                lines = log.read_text(errors="replace").splitlines()
+                build = log.parent.parent
+                platform = build.relative_to(self._out_dir).parts[0]
+                print(f"[kit]     {platform} {build.name} {log.stem}: {lines[-1] if lines else '(no output)'} "
+                      f"({len(self._seen)} runs played)", flush=True)
+
+
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
                 scenarios: tuple[str, ...] = ()) -> Tally:
     """The suite (tests/) on every board: one build per execution model and
@@ -148,7 +183,8 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
         command += ["-p", platform]
     if scenarios:
         command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
-    code = _run_streamed(command, log_dir / "twister.log", TwisterProgress().line)
+    with RunWatcher(out_dir):
+        code = _run_streamed(command, log_dir / "twister.log", TwisterProgress().line)
     tally = twister_tally(out_dir / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)
@@ -184,11 +220,17 @@ def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
         text = runner.run(build, log, scenario=scenario)
         return console.parse(text).one("HASH").fields.get("fnv")
 
+    def rerun_build(platform: str, build: Path) -> dict[str, str | None]:
+        # One build's scenarios one after another: two QEMUs of one build
+        # would share its console FIFOs and its link socket
+        return {scenario: rerun(platform, build, scenario) for p, b, scenario, _ in runs if (p, b) == (platform, build)}
+
+    builds = sorted({(platform, build) for platform, build, _, _ in runs})
     tally = Tally()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(rerun, platform, build, scenario) for platform, build, scenario, _ in runs]
-        for (platform, build, scenario, expected), future in zip(runs, futures, strict=True):
-            again = future.result()
+        futures = {key: pool.submit(rerun_build, *key) for key in builds}
+        for platform, build, scenario, expected in runs:
+            again = futures[(platform, build)].result()[scenario]
             same = again == expected
             print(f"[kit]   {platform} {build.name} {scenario}: sample hash {expected}, then {again}: "
                   f"{'identical' if same else 'DIFFERENT'}", flush=True)
