@@ -241,38 +241,48 @@ def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
 INTEGRATION = KIT_ROOT / "tests" / "integration"
 
 
-def run_integration(log_dir: Path) -> Tally:
+def run_integration(log_dir: Path, jobs: int = 2) -> Tally:
     """tests/integration (F´'s integration-test API, through fprime-gds's
-    pytest plugin) against every build of the suite, one at a time: each
-    booted under QEMU into its ground scenario with fprime-gds on its link
-    (kittools.ground). The kit's own runner, not twister's pytest harness:
-    that harness owns one console and knows nothing of a second serial port
-    or a GDS."""
+    pytest plugin) against every build of the suite, `jobs` builds at a
+    time: each booted under QEMU into its ground scenario with fprime-gds on
+    its link (kittools.ground), then fuzzed and swept. Two builds never share
+    a QEMU pipe, a link socket or a GDS transport (each station's is its
+    own), and what is timed is virtual time. The kit's own runner, not
+    twister's pytest harness: that harness owns one console and knows
+    nothing of a second serial port or a GDS."""
     builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
               if ground.serves_ground(build)]
     if not builds:
         raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
     tally = Tally()
-    for platform, build in builds:
-        name = f"{platform.replace('/', '_')}_{build.name}"
-        logs = results.integration_logs(log_dir, platform, build.name)
-        xml = logs / "pytest.xml"
-        started = time.monotonic()
-        with ground.GroundStation(build, logs) as station:
-            _run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
-                  *station.client_arguments(), "--logs", str(logs / "api"), f"--junitxml={xml}"],
-                 logs / "pytest.log")
-            console_text = station.console()
-        (logs / "console.log").write_text(console_text + "\n")
-        if not xml.is_file():
-            raise KitError(f"the integration suite wrote no report for {build}; see {logs / 'pytest.log'}")
-        result = junit_tally(xml)
-        print(f"[kit]   {name}: {result.passed} passed, {result.failed} failed "
-              f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
-        tally.add(result)
-        tally.add(foreign_dictionary_build(build, name, logs))
-        tally.add(fuzz_build(build, name, logs))
-        tally.add(serial_sweep_build(build, name, logs))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        for result in pool.map(lambda pair: ground_checks(pair[0], pair[1], log_dir), builds):
+            tally.add(result)
+    return tally
+
+
+def ground_checks(platform: str, build: Path, log_dir: Path) -> Tally:
+    """One build's ground-link checks, one after another (they share its
+    QEMU pipe and link socket): the integration suite, the foreign
+    dictionary, fuzzing, the serial-load sweep."""
+    name = f"{platform.replace('/', '_')}_{build.name}"
+    logs = results.integration_logs(log_dir, platform, build.name)
+    xml = logs / "pytest.xml"
+    started = time.monotonic()
+    with ground.GroundStation(build, logs) as station:
+        _run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
+              *station.client_arguments(), "--logs", str(logs / "api"), f"--junitxml={xml}"],
+             logs / "pytest.log")
+        console_text = station.console()
+    (logs / "console.log").write_text(console_text + "\n")
+    if not xml.is_file():
+        raise KitError(f"the integration suite wrote no report for {build}; see {logs / 'pytest.log'}")
+    tally = junit_tally(xml)
+    print(f"[kit]   {name}: {tally.passed} passed, {tally.failed} failed "
+          f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
+    tally.add(foreign_dictionary_build(build, name, logs))
+    tally.add(fuzz_build(build, name, logs))
+    tally.add(serial_sweep_build(build, name, logs))
     return tally
 
 
