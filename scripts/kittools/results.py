@@ -6,6 +6,7 @@ The schema is documented in docs/results.md; `compare.results(...).to_json()` wr
 
 from __future__ import annotations
 
+import concurrent.futures
 import json
 from pathlib import Path
 from typing import Any
@@ -137,17 +138,18 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
     scenario when it played, and those of the serial-load sweep `kit test`
     ran on the build (under `log_dir`)."""
     found: list[compare.VariantData] = []
-    for platform, build in suite_builds(twister_out, board):
-        run = played(build, "nominal")
-        if run is None or not run.of_kind("BANNER"):
-            continue
+    builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
+              if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]
+    # Zephyr's size reports take half a minute a build (DWARF): two at a time
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        reports = list(pool.map(lambda b: (modules.report(b[1], "rom"), modules.report(b[1], "ram")), builds))
+    for (platform, build, run), (rom, ram) in zip(builds, reports, strict=True):
         sweep = played(build, "load")
         if sweep is not None:
             run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
         serial = integration_logs(log_dir, platform, build.name) / SERIAL_SWEEP_FILE if log_dir is not None else None
         if serial is not None and serial.is_file():
             run.records += serial_sweep.records_of(serial)
-        rom, ram = modules.report(build, "rom"), modules.report(build, "ram")
         found.append(compare.VariantData(
             run.variant, measure(build), run, modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
             {kind: symbols.table(symbols.leaves(report), symbols.SYMBOL_FLOOR)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import concurrent.futures
 import json
 import re
+import shutil
 import subprocess
 import sys
 import threading
@@ -177,7 +178,13 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
-    command = ["west", "twister", "-T", "tests", "-j", "2", "-v", "--inline-logs",
+    # -n: build in the last run's folders, so that a second run rebuilds only
+    # what changed (twister configures again; ninja and ccache do the rest).
+    # The last run's consoles go first: a scenario this run does not play (or
+    # a build that fails) must not lend its old log to the results.
+    for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
+        shutil.rmtree(runs)
+    command = ["west", "twister", "-T", "tests", "-j", "2", "-n", "-v", "--inline-logs",
                "--outdir", str(out_dir), "--overflow-as-errors"]
     for platform in platforms:
         command += ["-p", platform]
