@@ -23,7 +23,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from .runner import Qemu, asks_at_boot, cache_value, ends_run
+from .runner import Qemu, asks_at_boot, build_kconfig, cache_value, ends_run
 from .workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 BOOT_TIMEOUT_S = 60.0
@@ -98,11 +98,8 @@ def boot(link: Link) -> Qemu:
 
 
 def scenario_of(build_dir: Path) -> str | None:
-    config = build_dir / "zephyr" / ".config"
-    if not config.is_file():
-        return None
-    match = re.search(r'^CONFIG_KIT_SCENARIO="(.*)"$', config.read_text(), re.MULTILINE)
-    return match.group(1) if match else None
+    """The scenario a build plays when the console does not choose one."""
+    return build_kconfig(build_dir).get("CONFIG_KIT_SCENARIO")
 
 
 def socket_free(path: Path) -> bool:

@@ -12,6 +12,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+from .footprint import kconfig
 from .workspace import KIT_ROOT, KitError, environment
 
 RUN_TIMEOUT_S = 180.0
@@ -36,11 +37,17 @@ def cache_value(build_dir: Path, name: str) -> str | None:
     return match.group(1) if match else None
 
 
+def build_kconfig(build_dir: Path) -> dict[str, str]:
+    """A build's Kconfig values (footprint.kconfig of its .config), or {}
+    for a folder that was never configured."""
+    config = build_dir / "zephyr" / ".config"
+    return kconfig(config) if config.is_file() else {}
+
+
 def asks_at_boot(build_dir: Path) -> bool:
     """The build asks for its scenario on the console at boot
     (CONFIG_KIT_SCENARIO_AT_BOOT: every build of the suite)."""
-    config = build_dir / "zephyr" / ".config"
-    return config.is_file() and "\nCONFIG_KIT_SCENARIO_AT_BOOT=y\n" in config.read_text()
+    return build_kconfig(build_dir).get("CONFIG_KIT_SCENARIO_AT_BOOT") == "y"
 
 
 #: The line a build that asks at boot prints before it reads the name
