@@ -54,6 +54,44 @@ function(fprime_zephyr_require_patches UPSTREAM_PATH PATCH_DIR)
     endforeach()
 endfunction()
 
+# F´ writes a configuration file it supplies into the build folder, then the
+# kit's override over it, on every configure (nasa/fprime#4676, fixed upstream
+# after the kit's pin): the content ends as it was, but its time moves, and
+# ninja regenerates and recompiles all that includes it (PlatformTypes.fpp,
+# AcConstants.fpp: 360 steps and a relink on a warm build that changed
+# nothing). At the end of each configure, a configuration file whose content
+# is what it was at the end of the last one gets that configure's time back,
+# from a copy kept beside it (file(COPY) keeps times). A changed file keeps
+# its new time and becomes the copy.
+function(fprime_zephyr_keep_config_times)
+    set(KEPT_ROOT "${CMAKE_BINARY_DIR}/fprime-config-kept")
+    get_property(CONFIG_MODULES GLOBAL PROPERTY FPRIME_CONFIG_MODULES)
+    foreach(CONFIG_MODULE IN LISTS CONFIG_MODULES)
+        foreach(SUPPLIED IN ITEMS SUPPLIED_SOURCES SUPPLIED_HEADERS SUPPLIED_AUTOCODER_INPUTS)
+            get_target_property(CONFIG_FILES ${CONFIG_MODULE} ${SUPPLIED})
+            foreach(CONFIG_FILE IN LISTS CONFIG_FILES)
+                cmake_path(IS_PREFIX CMAKE_BINARY_DIR "${CONFIG_FILE}" NORMALIZE IN_BUILD)
+                if(NOT IN_BUILD OR NOT EXISTS "${CONFIG_FILE}")
+                    continue()
+                endif()
+                cmake_path(RELATIVE_PATH CONFIG_FILE BASE_DIRECTORY "${CMAKE_BINARY_DIR}" OUTPUT_VARIABLE RELATIVE)
+                set(KEPT "${KEPT_ROOT}/${RELATIVE}")
+                get_filename_component(CONFIG_DIR "${CONFIG_FILE}" DIRECTORY)
+                get_filename_component(KEPT_DIR "${KEPT}" DIRECTORY)
+                if(EXISTS "${KEPT}")
+                    file(SHA256 "${CONFIG_FILE}" NOW)
+                    file(SHA256 "${KEPT}" BEFORE)
+                    if(NOW STREQUAL BEFORE)
+                        file(COPY "${KEPT}" DESTINATION "${CONFIG_DIR}")
+                        continue()
+                    endif()
+                endif()
+                file(COPY "${CONFIG_FILE}" DESTINATION "${KEPT_DIR}")
+            endforeach()
+        endforeach()
+    endforeach()
+endfunction()
+
 macro(fprime_zephyr_setup)
     if(NOT CONFIG_FPRIME)
         message(FATAL_ERROR "fprime_zephyr_setup(): CONFIG_FPRIME is off (modules/fprime/Kconfig)")
@@ -68,6 +106,8 @@ macro(fprime_zephyr_setup)
     fprime_zephyr_native_fpp()
     include("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake")
     fprime_setup_included_code()
+    # After every module of the application has registered its configuration
+    cmake_language(DEFER DIRECTORY "${CMAKE_SOURCE_DIR}" CALL fprime_zephyr_keep_config_times)
     # Build only what the deployment links: the framework and its libraries
     # register every module they have (the modules of modules/ add theirs to
     # FPRIME_ZEPHYR_NOT_IN_ALL: some do not compile against this Zephyr).

@@ -15,20 +15,24 @@
 from __future__ import annotations
 
 import argparse
+import concurrent.futures
 import functools
 import json
 import sys
+import threading
 import time
 from collections.abc import Callable
 from pathlib import Path
 
 from . import ablation, budget, console, ground, report, results, serial_sweep, sizing, style, sweep, symbols, testing
 from .board import REFERENCE_BOARD, new_board
-from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant
+from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant, one_at_a_time
 
 
 def _say(message: str) -> None:
-    print(f"[kit] {message}", flush=True)
+    # One write per line: `kit test` says things from two lanes at once
+    sys.stdout.write(f"[kit] {message}\n")
+    sys.stdout.flush()
 
 
 #: What `kit compare` plays: the comparison run and the load sweep
@@ -58,7 +62,8 @@ def cmd_compare(args: argparse.Namespace) -> int:
         check_board(board)
     check_provisioned()
     out_dir = Path(args.output).resolve()
-    files, passed = compare_boards(boards, out_dir)
+    with one_at_a_time("compare"):
+        files, passed = compare_boards(boards, out_dir)
     outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())
@@ -94,34 +99,59 @@ def cmd_test(args: argparse.Namespace) -> int:
         check_board(board)
     check_provisioned()
     log_dir = Path(args.output).resolve()
-    total = testing.Tally()
-    steps: list[tuple[str, Callable[[], testing.Tally]]] = []
+    # Two lanes. The QEMU lane: twister, then what reads its builds. The host
+    # lane needs none of them; it runs beside twister (whose start and last
+    # runs leave a core idle), and the ground link's checks wait for it to
+    # end: their time-outs are the host's, and they keep it to themselves.
+    qemu_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
+    host_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
+    host_lane_done = threading.Event()
     if not args.skip_twister:
-        steps.append((f"twister suite under QEMU ({', '.join(boards)})", lambda: testing.run_twister(boards, log_dir)))
-        steps.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
+        # Every board's size reports at once (two builds at a time), before the first budget
+        size_reports = functools.cache(testing.make_size_reports)
+
+        def budget(board: str) -> testing.Tally:
+            size_reports()
+            return testing.check_budget(board, log_dir, _budget(args), args.update_baseline)
+
+        qemu_lane.append((f"twister suite under QEMU ({', '.join(boards)})",
+                          lambda: testing.run_twister(boards, log_dir)))
+        qemu_lane.append(("determinism: twister's binaries run again", lambda: testing.check_determinism(log_dir)))
         # Before the budget: the board's report takes the serial-load sweep from it
-        steps.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
-                      lambda: testing.run_integration(log_dir)))
+        def ground() -> testing.Tally:
+            host_lane_done.wait()
+            return testing.run_integration(log_dir)
+
+        qemu_lane.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep", ground))
         for board in boards:
-            steps.append((f"budget: {board} results against its baseline",
-                          functools.partial(testing.check_budget, board, log_dir, _budget(args),
-                                            args.update_baseline)))
+            qemu_lane.append((f"budget: {board} results against its baseline", functools.partial(budget, board)))
     if not args.skip_host:
-        steps.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
+        host_lane.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:
-        steps.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
-        steps.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
-        steps.append(("C++ style (clang-format, F´ style)", style.run_style_check))
+        host_lane.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
+        host_lane.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
+        host_lane.append(("C++ style (clang-format, F´ style)", style.run_style_check))
     started = time.monotonic()
+    with one_at_a_time("test"), concurrent.futures.ThreadPoolExecutor(max_workers=1) as beside:
+        host = beside.submit(_run_steps, host_lane)
+        host.add_done_callback(lambda _: host_lane_done.set())
+        total = _run_steps(qemu_lane)
+        total.add(host.result())
+    _say(f"all steps: {time.monotonic() - started:.0f} s")
+    print(f"total: {total.passed} passed, {total.failed} failed")
+    return 0 if total.failed == 0 and total.passed > 0 else 1
+
+
+def _run_steps(steps: list[tuple[str, Callable[[], testing.Tally]]]) -> testing.Tally:
+    """Run steps in order, a line as each starts and ends; their added count."""
+    total = testing.Tally()
     for name, step in steps:
         _say(f"{name} ...")
         step_started = time.monotonic()
         tally = step()
         _say(f"{name}: {tally.passed} passed, {tally.failed} failed ({time.monotonic() - step_started:.0f} s)")
         total.add(tally)
-    _say(f"all steps: {time.monotonic() - started:.0f} s")
-    print(f"total: {total.passed} passed, {total.failed} failed")
-    return 0 if total.failed == 0 and total.passed > 0 else 1
+    return total
 
 
 def _ground_build(args: argparse.Namespace) -> tuple[Path, Path]:

@@ -83,7 +83,7 @@ def invalid_frame(kind: str, rng: random.Random, deployment: Deployment) -> byte
         return frame(command(rng.choice(sorted(deployment.opcodes)), rng.randbytes(rng.randint(0, 8))))
 
     if kind == "garbage":
-        return bytes(rng.choice(GARBAGE_BYTES) for _ in range(rng.randint(1, 48)))
+        return bytes(rng.choice(GARBAGE_BYTES) for _ in range(rng.randint(1, INVALID_FRAME_MAX)))
     if kind == "bad_checksum":
         corrupted = bytearray(short_frame())
         corrupted[-1 - rng.randrange(TRAILER.size)] ^= 1 << rng.randrange(8)
@@ -185,7 +185,21 @@ def answered(link: Downlink, noops: int) -> bool:
     return link.events[NOOP_EVENT] >= noops
 
 
-def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per_batch: int = 4,
+# The longest invalid frame of any kind (garbage; the framed kinds are at
+# most 32 bytes)
+INVALID_FRAME_MAX = 48
+# fprime-zephyr's ZephyrUartDriver receive ring (RING_BUF_SIZE), drained
+# 64 bytes per 100 Hz call: a batch lands in it whole, so the worst batch
+# must fit, or the NO_OP closing it could be dropped
+UART_RING_BYTES = 1024
+# Invalid frames per batch: at most 12 x 48 + NO_OP + padding = 676 bytes.
+# Each NO_OP's round trip costs a few 10 Hz cycles of virtual time; 12 a
+# batch instead of 4 took the reference board's 10,000 frames from 34 to
+# about 20 s here
+PER_BATCH = 12
+
+
+def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per_batch: int = PER_BATCH,
         halted: Callable[[], str] = lambda: "") -> Outcome:
     """Send `invalid_frames` invalid frames in batches of `per_batch`, each
     batch closed by a NO_OP, and return what the deployment answered.
@@ -195,13 +209,17 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
     rng = random.Random(seed)
     outcome = Outcome(seed)
     noop = frame(command(deployment.noop))
+    if per_batch * INVALID_FRAME_MAX + len(noop) + len(PADDING) > UART_RING_BYTES:
+        raise ValueError(f"{per_batch} invalid frames a batch could overrun the UART's {UART_RING_BYTES}-byte ring")
     link = Downlink(socket_path, dictionary)
     try:
         while outcome.invalid_sent < invalid_frames and not outcome.halt:
             batch = b""
             for _ in range(min(per_batch, invalid_frames - outcome.invalid_sent)):
                 kind = rng.choice(INVALID_KINDS)
-                batch += invalid_frame(kind, rng, deployment)
+                invalid = invalid_frame(kind, rng, deployment)
+                assert len(invalid) <= INVALID_FRAME_MAX, f"{kind}: {len(invalid)} bytes"
+                batch += invalid
                 outcome.sent[kind] += 1
             link.send(batch + noop + PADDING)
             outcome.noops_sent += 1

@@ -10,13 +10,15 @@ counted as "unattributed".
 
 from __future__ import annotations
 
+import hashlib
 import json
 import subprocess
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from .workspace import KIT_ROOT, KitError, environment
+from .workspace import DEPS, KIT_ROOT, KitError, environment
 
 FRAMEWORK = "F´ framework"
 SERVICES = "F´ services"
@@ -72,6 +74,24 @@ _BY_SYMBOL = (
 )
 
 
+def _make_reports(build_dir: Path, elf: Path) -> None:
+    """rom.json and ram.json in the build folder: Zephyr's size_report as its
+    rom_report and ram_report targets run it (same depth, same workspace:
+    `west topdir`, the kit's root), but once for both (`all`: one reading of
+    the DWARF) and without ninja, so that it can run while a QEMU of the same
+    build folder does. PYTHONHASHSEED=0: the tool gives a symbol that shares
+    its address with another one name or the other by the order of a Python
+    set, so that two runs on one image moved a few bytes between layers."""
+    size_report = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
+    command = [sys.executable, str(size_report), "-k", str(elf), "-z", str(DEPS / "zephyr"), "-o", str(build_dir),
+               f"--workspace={KIT_ROOT}", "-d", "99", "-q", "all"]
+    result = subprocess.run(command, cwd=build_dir, env={**environment(), "PYTHONHASHSEED": "0"},
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    missing = [name for name in ("rom.json", "ram.json") if not (build_dir / name).is_file()]
+    if result.returncode != 0 or missing:
+        raise KitError(f"Zephyr's size_report failed for {build_dir} ({' '.join(command)}): {result.stderr[-2000:]}")
+
+
 # Leaf identifiers are relative to the report's top-level groups
 _GROUP_PREFIX = {"ZEPHYR_BASE": "/deps/zephyr/", "OUTPUT_DIR": "/OUTPUT_DIR/", "WORKSPACE": "/"}
 
@@ -115,17 +135,20 @@ def breakdown(report: dict) -> dict[str, int]:
 
 
 def report(build_dir: Path, kind: str) -> dict:
-    """Zephyr's rom or ram report of a build, generated if missing or stale."""
+    """Zephyr's rom or ram report of a build, made if missing or made from
+    another image. "Another image" is decided by content: a configure
+    relinks (Zephyr rewrites its linker snippets every time) into the same
+    bytes, and the reports take most of a minute (DWARF)."""
     if kind not in ("rom", "ram"):
         raise ValueError(kind)
     path = build_dir / f"{kind}.json"
+    made_from = build_dir / "size-reports.elf-sha256"
     elf = build_dir / "zephyr" / "zephyr.elf"
     if not elf.is_file():
         raise KitError(f"{elf} is missing: build first")
-    if not path.is_file() or path.stat().st_mtime < elf.stat().st_mtime:
-        result = subprocess.run(["west", "build", "-d", str(build_dir), "-t", f"{kind}_report"], cwd=KIT_ROOT,
-                                env=environment(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if result.returncode != 0 or not path.is_file():
-            raise KitError(f"west build -t {kind}_report failed for {build_dir}: {result.stderr[-2000:]}")
+    image = hashlib.sha256(elf.read_bytes()).hexdigest()
+    if not path.is_file() or not made_from.is_file() or made_from.read_text().strip() != image:
+        _make_reports(build_dir, elf)
+        made_from.write_text(image + "\n")
     loaded: dict[str, Any] = json.loads(path.read_text())
     return loaded

@@ -17,7 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, fuzz, ground, results, runner, serial_sweep, sizing, sweep, symbols
+from . import budget, console, fuzz, ground, modules, results, runner, serial_sweep, sizing, sweep, symbols
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
@@ -184,6 +184,9 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
         shutil.rmtree(runs)
+    # ... and so does the last run's report: a twister that dies before
+    # writing its own must not be counted by the last one's
+    (out_dir / "twister.json").unlink(missing_ok=True)
     command = ["west", "twister", "-T", "tests", "-j", "2", "-n", "-v", "--inline-logs",
                "--outdir", str(out_dir), "--overflow-as-errors"]
     for platform in platforms:
@@ -379,6 +382,25 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
           f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
           f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}", flush=True)
     return Tally(failed=1) if failures else Tally(passed=1)
+
+
+def make_size_reports(twister_out: Path = TWISTER_OUT, jobs: int = 2) -> None:
+    """Zephyr's rom and ram reports of every build of the suite, `jobs`
+    builds at a time (kittools.modules: most of a minute of one core each),
+    before the budget steps read them board by board. Not beside the ground
+    link's checks, whose time-outs are the host's: those keep the host to
+    themselves, as they were measured. A failure is left to the budget
+    step, which makes the report again and says why."""
+    builds = [build for _, build in results.suite_builds(twister_out)]
+
+    def make(build: Path) -> None:
+        try:
+            modules.report(build, "rom")  # and ram.json, from the same run
+        except KitError:
+            pass  # made again, and reported, by the budget step
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        list(pool.map(make, builds))
 
 
 BASELINES = KIT_ROOT / "tests" / "baselines"

@@ -3,8 +3,11 @@
 
 from __future__ import annotations
 
+import contextlib
+import fcntl
 import os
 import shutil
+from collections.abc import Iterator
 from pathlib import Path
 
 KIT_ROOT = Path(__file__).resolve().parents[2]
@@ -88,3 +91,26 @@ def environment() -> dict[str, str]:
         env["ZEPHYR_TOOLCHAIN_VARIANT"] = "gnuarmemb"
         env["GNUARMEMB_TOOLCHAIN_PATH"] = str(Path(gcc).resolve().parent.parent)
     return env
+
+
+@contextlib.contextmanager
+def one_at_a_time(command: str) -> Iterator[None]:
+    """Hold this tree's lock for `kit <command>` while it runs: two of them
+    would share its build folders, the builds' QEMU consoles (FIFOs) and
+    link sockets, and each would fail in the other's way. The lock is the
+    kernel's (flock): it goes with the process, however it ends."""
+    path = KIT_ROOT / "build" / f".kit-{command}.lock"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("a+") as lock:
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            lock.seek(0)
+            holder = lock.read().strip() or "a process"
+            raise KitError(f"another `kit {command}` is running in this tree ({holder}); the two would share its "
+                           "build folders, QEMU consoles and link sockets: wait for it, or stop it") from None
+        lock.seek(0)
+        lock.truncate()
+        lock.write(f"pid {os.getpid()}\n")
+        lock.flush()
+        yield

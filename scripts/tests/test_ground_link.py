@@ -34,6 +34,8 @@ def test_invalid_frames_are_invalid_and_seeded():
 
     assert batch(7) == batch(7)
     assert batch(7) != batch(8)
+    # The batch size's bound against the UART's ring (fuzz.PER_BATCH) holds
+    assert max(len(frame) for frame in batch(7)) <= fuzz.INVALID_FRAME_MAX
     FpFramerDeframer.set_constants()
     rng = random.Random(1)
     for kind in ("garbage", "bad_checksum", "truncated", "oversized", "length_wraps"):

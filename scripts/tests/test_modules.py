@@ -55,3 +55,35 @@ def test_the_ground_link_is_its_own_layer():
     assert modules.classify(":/_ZN3Kit6timingE") == modules.KIT
     dispatcher = "deps/fprime/Svc/CmdDispatcher/CommandDispatcherImpl.cpp/f"
     assert modules.classify(dispatcher, "WORKSPACE") == modules.SERVICES
+
+
+def test_a_size_report_is_made_again_only_for_another_image(tmp_path, monkeypatch):
+    """Staleness is by the image's content: a relink into the same bytes (a
+    configure's) keeps the reports, different bytes remake both, in one run
+    of Zephyr's size_report with a fixed hash seed."""
+    import json
+    import os
+    import subprocess
+
+    elf = tmp_path / "zephyr" / "zephyr.elf"
+    elf.parent.mkdir()
+    elf.write_bytes(b"image 1")
+    made = []
+
+    def size_report(command, **kwargs):
+        made.append((command[-1], kwargs["env"]["PYTHONHASHSEED"]))
+        for kind in ("rom", "ram"):
+            (tmp_path / f"{kind}.json").write_text(json.dumps(_tree()))
+        return subprocess.CompletedProcess(command, 0, "", "")
+
+    monkeypatch.setattr(modules.subprocess, "run", size_report)
+    assert modules.report(tmp_path, "rom")["total_size"] == 100
+    modules.report(tmp_path, "ram")
+    assert made == [("all", "0")]
+    later = elf.stat().st_mtime + 60
+    os.utime(elf, (later, later))  # relinked, same bytes
+    modules.report(tmp_path, "rom")
+    assert made == [("all", "0")]
+    elf.write_bytes(b"image 2")
+    modules.report(tmp_path, "ram")
+    assert made == [("all", "0"), ("all", "0")]

@@ -53,3 +53,28 @@ def test_missing_toolchain_is_explained(monkeypatch):
     monkeypatch.setattr(workspace.shutil, "which", lambda *a, **k: None)
     with pytest.raises(KitError, match="gcc-arm-none-eabi"):
         workspace.environment()
+
+
+def test_a_second_run_in_the_same_tree_is_refused(tmp_path, monkeypatch):
+    import subprocess
+    import sys
+
+    monkeypatch.setattr(workspace, "KIT_ROOT", tmp_path)
+    # Another process holds the lock, as a `kit test` already running would
+    holder = subprocess.Popen([sys.executable, "-c", (
+        "import fcntl, os, sys, time\n"
+        f"f = open({str(tmp_path / 'build' / '.kit-test.lock')!r}, 'a+')\n"
+        "fcntl.flock(f, fcntl.LOCK_EX); f.write('pid %d' % os.getpid()); f.flush()\n"
+        "print('held', flush=True); time.sleep(30)\n")], stdout=subprocess.PIPE, text=True,
+        preexec_fn=lambda: (tmp_path / "build").mkdir(exist_ok=True))
+    try:
+        assert holder.stdout is not None and holder.stdout.readline().strip() == "held"
+        refused = rf"another `kit test` is running in this tree \(pid {holder.pid}\)"
+        with pytest.raises(workspace.KitError, match=refused):
+            with workspace.one_at_a_time("test"):
+                pass
+    finally:
+        holder.kill()
+        holder.wait()
+    with workspace.one_at_a_time("test"):  # free again once the holder is gone
+        pass
