@@ -64,7 +64,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
     out_dir = Path(args.output).resolve()
     with one_at_a_time("compare"):
         files, passed = compare_boards(boards, out_dir)
-    outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
+        outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())
     _say(f"results: {', '.join(str(f) for f in files)}")
