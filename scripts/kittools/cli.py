@@ -46,6 +46,7 @@ def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
     out_dir.mkdir(parents=True, exist_ok=True)
     twister_out = out_dir / "twister"
     tally = testing.run_twister(boards, out_dir, twister_out, scenarios=COMPARISON_SCENARIOS)
+    testing.make_size_reports(twister_out)  # every board's at once, two builds at a time
     files = []
     for board in boards:
         data = results.from_twister(twister_out, board)

@@ -10,6 +10,7 @@ counted as "unattributed".
 
 from __future__ import annotations
 
+import concurrent.futures
 import hashlib
 import json
 import subprocess
@@ -72,6 +73,12 @@ _BY_SYMBOL = (
     ("_ZTVN2Fw", FRAMEWORK), ("_ZN2Os9Baremetal", OS_LAYER), ("_ZN2Os6Zephyr", OS_LAYER), ("_ZN2Os", FRAMEWORK),
     ("_ZTVN2Os", FRAMEWORK), ("_ZNSt", LIBSTDCXX), ("_ZSt", LIBSTDCXX), ("__cxa", LIBSTDCXX), ("__gnu_cxx", LIBSTDCXX),
 )
+
+
+def reports(builds: list[Path], jobs: int = 2) -> list[tuple[dict, dict]]:
+    """(rom, ram) reports of several builds (`report`), `jobs` builds at a time."""
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(lambda build: (report(build, "rom"), report(build, "ram")), builds))
 
 
 def _make_reports(build_dir: Path, elf: Path) -> None:

@@ -6,7 +6,6 @@ The schema is documented in docs/results.md; `compare.results(...).to_json()` wr
 
 from __future__ import annotations
 
-import concurrent.futures
 import json
 from pathlib import Path
 from typing import Any
@@ -140,9 +139,7 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
     found: list[compare.VariantData] = []
     builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
               if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]
-    # Zephyr's size reports take half a minute a build (DWARF): two at a time
-    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        reports = list(pool.map(lambda b: (modules.report(b[1], "rom"), modules.report(b[1], "ram")), builds))
+    reports = modules.reports([build for _, build, _ in builds])
     for (platform, build, run), (rom, ram) in zip(builds, reports, strict=True):
         sweep = played(build, "load")
         if sweep is not None:

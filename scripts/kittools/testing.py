@@ -384,23 +384,17 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
     return Tally(failed=1) if failures else Tally(passed=1)
 
 
-def make_size_reports(twister_out: Path = TWISTER_OUT, jobs: int = 2) -> None:
-    """Zephyr's rom and ram reports of every build of the suite, `jobs`
-    builds at a time (kittools.modules: most of a minute of one core each),
-    before the budget steps read them board by board. Not beside the ground
-    link's checks, whose time-outs are the host's: those keep the host to
-    themselves, as they were measured. A failure is left to the budget
-    step, which makes the report again and says why."""
-    builds = [build for _, build in results.suite_builds(twister_out)]
-
-    def make(build: Path) -> None:
-        try:
-            modules.report(build, "rom")  # and ram.json, from the same run
-        except KitError:
-            pass  # made again, and reported, by the budget step
-
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        list(pool.map(make, builds))
+def make_size_reports(twister_out: Path = TWISTER_OUT) -> None:
+    """Zephyr's rom and ram reports of every build of the suite, all boards'
+    at once (kittools.modules: most of a minute of one core each, two builds
+    at a time), before the budget steps read them board by board. Not beside
+    the ground link's checks, whose time-outs are the host's: those keep the
+    host to themselves, as they were measured. A failure is left to the
+    budget step, which makes the report again and says why."""
+    try:
+        modules.reports([build for _, build in results.suite_builds(twister_out)])
+    except KitError:
+        pass  # made again, and reported, by the budget step
 
 
 BASELINES = KIT_ROOT / "tests" / "baselines"

@@ -201,6 +201,8 @@ def test_scenario(dut: DeviceAdapter, scenario: str) -> None:
     if scenario == "soak":
         minutes = int(config_value(build, "CONFIG_KIT_SOAK_MINUTES"))
         expected = [pattern.replace("minute=LAST", f"minute={minutes}") for pattern in expected]
+        if minutes == 1:  # one checkpoint: its line is minute one's and the last
+            expected = expected[1:]
         timeout_s += SOAK_TIMEOUT_PER_MINUTE_S * minutes
     prompt, asked = [], False
     deadline = time.monotonic() + DEFAULT_TIMEOUT_S
