@@ -19,58 +19,17 @@ set(FPRIME_FRAMEWORK_PATH "${KIT_DEPS}/fprime" CACHE PATH "F´ (nasa/fprime)")
 set(FPRIME_ZEPHYR_PATH "${KIT_DEPS}/fprime-zephyr" CACHE PATH "fprime-zephyr")
 set(FPRIME_BAREMETAL_PATH "${KIT_DEPS}/fprime-baremetal" CACHE PATH "fprime-baremetal")
 
-# --- Workspace --------------------------------------------------------
-foreach(KIT_UPSTREAM IN ITEMS "${KIT_DEPS}/zephyr/CMakeLists.txt" "${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake"
-        "${FPRIME_ZEPHYR_PATH}/cmake/toolchain/zephyr.cmake" "${FPRIME_BAREMETAL_PATH}/library.cmake")
-    if(NOT EXISTS "${KIT_UPSTREAM}")
-        message(FATAL_ERROR
-            "kit: the west workspace is not provisioned: ${KIT_UPSTREAM} is missing.\n"
-            "Run scripts/setup.sh (it installs the tools and runs 'west update').")
-    endif()
-endforeach()
-
-# --- Board ------------------------------------------------------------
-# Every board the kit runs on has a folder in boards/ (docs/porting.md): the
-# board target with '/' as '_' (mps2/an385: mps2_an385), else the board's
-# name alone, covering all its qualifiers (qemu_cortex_m3/ti_lm3s6965).
-# scripts/kittools/workspace.py applies the same rule. Zephyr splits
-# "mps2/an385" into BOARD and BOARD_QUALIFIERS, and F´'s sub-builds inherit
-# the split BOARD: they read the cache entry the main configuration leaves.
-if(DEFINED FPRIME_SUB_BUILD_TARGETS AND DEFINED KIT_BOARD_TARGET)
-    set(KIT_BOARD_SPEC "${KIT_BOARD_TARGET}")
-elseif(DEFINED BOARD)
-    set(KIT_BOARD_SPEC "${BOARD}")
-elseif(DEFINED ENV{BOARD})
-    set(KIT_BOARD_SPEC "$ENV{BOARD}")
-else()
-    message(FATAL_ERROR "kit: no board given. Use west build -b qemu_cortex_m3 ...")
-endif()
-string(REPLACE "/" "_" KIT_BOARD "${KIT_BOARD_SPEC}")
-if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
-    string(REGEX REPLACE "/.*$" "" KIT_BOARD "${KIT_BOARD_SPEC}")
-endif()
-if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
-    file(GLOB KIT_PORTED_BOARDS RELATIVE "${KIT_ROOT}/boards" "${KIT_ROOT}/boards/*")
-    list(FILTER KIT_PORTED_BOARDS EXCLUDE REGEX "\\.")
-    message(FATAL_ERROR
-        "kit: board '${KIT_BOARD_SPEC}' has no kit port. Ported boards: ${KIT_PORTED_BOARDS}.\n"
-        "To bring the kit to a new board: west kit new-board <board>, then docs/porting.md.")
-endif()
-set(KIT_BOARD_DIR "${KIT_ROOT}/boards/${KIT_BOARD}")
-set(KIT_BOARD_TARGET "${KIT_BOARD_SPEC}" CACHE STRING "Board target of this kit build" FORCE)
-foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig Tables.fpp app.overlay)
-    if(NOT EXISTS "${KIT_BOARD_DIR}/${KIT_BOARD_FILE}")
-        message(FATAL_ERROR "kit: boards/${KIT_BOARD}/${KIT_BOARD_FILE} is missing; every port has one "
-            "(see docs/porting.md).")
-    endif()
-endforeach()
+# --- Workspace, board and toolchain (app/board.cmake, shared with tests/floor)
+include("${CMAKE_CURRENT_LIST_DIR}/board.cmake")
+kit_require_workspace("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake"
+    "${FPRIME_ZEPHYR_PATH}/cmake/toolchain/zephyr.cmake" "${FPRIME_BAREMETAL_PATH}/library.cmake")
 
 # --- Configuration ----------------------------------------------------
 # Kit-wide settings, then the board's; the execution model and the scenario
 # are Kconfig choices (app/Kconfig), and the board's defaults per model are
 # its Kconfig.defconfig, sourced by app/Kconfig through this generated file.
 if(NOT DEFINED CONF_FILE)
-    set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_BOARD_DIR}/kit.conf")
+    set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_ROOT}/app/clock.conf" "${KIT_BOARD_DIR}/kit.conf")
 endif()
 if(NOT DTC_OVERLAY_FILE)
     set(DTC_OVERLAY_FILE "${KIT_BOARD_DIR}/app.overlay")
@@ -100,31 +59,6 @@ file(CONFIGURE OUTPUT "${CMAKE_BINARY_DIR}/Kconfig/Kconfig.kit_board"
 if(DEFINED KIT_VARIANT)
     message(FATAL_ERROR "kit: KIT_VARIANT is gone: the execution model is a Kconfig choice. Use "
         "-DCONFIG_KIT_MODEL_${KIT_VARIANT}=y (upper case) or west build -T app/kit.<model>.")
-endif()
-
-# --- Toolchain --------------------------------------------------------
-# Default: Debian's arm-none-eabi GCC through Zephyr's gnuarmemb variant, with
-# the toolchain's own picolibc (the only route to libstdc++ there). A Zephyr
-# SDK is used instead whenever the user selects it.
-if(NOT DEFINED ZEPHYR_TOOLCHAIN_VARIANT AND NOT DEFINED ENV{ZEPHYR_TOOLCHAIN_VARIANT}
-   AND NOT DEFINED ENV{ZEPHYR_SDK_INSTALL_DIR})
-    find_program(KIT_ARM_GCC arm-none-eabi-gcc)
-    if(NOT KIT_ARM_GCC)
-        message(FATAL_ERROR
-            "kit: no ARM toolchain. Install Debian's gcc-arm-none-eabi, picolibc-arm-none-eabi and "
-            "libstdc++-arm-none-eabi-picolibc (scripts/setup.sh does), or set ZEPHYR_SDK_INSTALL_DIR "
-            "to use a Zephyr SDK.")
-    endif()
-    get_filename_component(KIT_ARM_GCC_BIN "${KIT_ARM_GCC}" DIRECTORY)
-    get_filename_component(KIT_ARM_GCC_ROOT "${KIT_ARM_GCC_BIN}" DIRECTORY)
-    set(ZEPHYR_TOOLCHAIN_VARIANT gnuarmemb CACHE STRING "Zephyr toolchain variant")
-    set(GNUARMEMB_TOOLCHAIN_PATH "${KIT_ARM_GCC_ROOT}" CACHE PATH "arm-none-eabi toolchain root")
-endif()
-if(ZEPHYR_TOOLCHAIN_VARIANT STREQUAL "gnuarmemb" OR "$ENV{ZEPHYR_TOOLCHAIN_VARIANT}" STREQUAL "gnuarmemb")
-    set(TOOLCHAIN_HAS_PICOLIBC ON CACHE BOOL "toolchain provides picolibc")
-    # Kconfig reads this from the environment; without it picolibc's TLS errno
-    # lands in an orphan .tbss section.
-    set(ENV{ZEPHYR_TOOLCHAIN_SUPPORTS_THREAD_LOCAL_STORAGE} y)
 endif()
 
 # --- Zephyr, with F´ as modules --------------------------------------

@@ -14,6 +14,7 @@
 // Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
+#include "app/src/TickPath.h"
 #include "baremetal/Os/BudgetedScheduler.hpp"
 #include "baremetal/Os/TimedTask.hpp"
 
@@ -107,17 +108,8 @@ Context currentContext() {
 
 void waitForTick(U32 (*ticksFired)(), U32 handled) {
     const U32 begin = k_cycle_get_32();
-    // Check and sleep without a window: on ARMv7-M k_cpu_idle() masks with
-    // PRIMASK before it lifts the irq_lock (BASEPRI) and sleeps in WFI, so a
-    // tick that fires after the check still wakes it. Not
-    // k_cpu_atomic_idle(): it sleeps in WFE, which QEMU executes as a busy
-    // spin, costing wall time (a soak ran 5x slower) though not virtual time.
-    unsigned int key = irq_lock();
-    while (ticksFired() == handled) {
-        k_cpu_idle();
-        key = irq_lock();
-    }
-    irq_unlock(key);
+    // WFI until the tick moves, shared with the floor it is measured against
+    kit_tick_idle_until(ticksFired, handled);
     const U32 slept = k_cycle_get_32() - begin;
     s_idleCycles += slept;
     s_idleWaits++;

@@ -6,6 +6,7 @@
 // ======================================================================
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/src/TickControl.hpp"
+#include "app/src/TickPath.h"
 #include "app/src/Variant.hpp"
 
 #include <zephyr/kernel.h>
@@ -20,9 +21,7 @@ U32 s_stamps[STAMP_HISTORY];
 
 void onExpiry(struct k_timer* timer) {
     (void)timer;
-    const U32 fired = s_fired;
-    s_stamps[fired % STAMP_HISTORY] = k_cycle_get_32();
-    s_fired = fired + 1;  // aligned 32-bit store: atomic on Cortex-M
+    kit_tick_stamp(&s_fired, s_stamps, STAMP_HISTORY);
     Variant::onTickIsr();
 }
 }  // namespace

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
 """The budget gate: a board's results against its baseline.
 
-ROM or static RAM more than +2%, a p99 more than +10% and over 2 µs, or any
+ROM or static RAM more than +2%, a p99 more than +10% and over 2 µs, the
+fastest rate group's latency over its kernel floor more than +10%, or any
 new slip fails it (the limits are options). It decides from the metrics
 alone: no report is rendered, and no plotting or templating library is
 imported here or by what it imports.
@@ -23,10 +24,11 @@ class Budget:
     ram_pct: float = 2.0
     p99_pct: float = 10.0
     p99_floor_us: float = 2.0  # smaller changes of a p99 are never a regression
+    floor_ratio_pct: float = 10.0  # the dispatch path against the kernel floor (kittools.floor)
 
     def describe(self) -> str:
         return (f"ROM +{self.rom_pct:.1f}%, RAM +{self.ram_pct:.1f}%, p99 +{self.p99_pct:.0f}% above "
-                f"{self.p99_floor_us:.0f} µs allowed")
+                f"{self.p99_floor_us:.0f} µs, latency over the kernel floor +{self.floor_ratio_pct:.0f}% allowed")
 
 
 @dataclass(frozen=True)
@@ -79,6 +81,9 @@ def judge(metric: MetricId, before: float, now: float, budget: Budget) -> str:
     elif metric.stat == "p99" and metric.unit == "us":
         if delta > budget.p99_floor_us and pct > budget.p99_pct:
             return f"regressed (+{pct:.1f}% > {budget.p99_pct}%)"
+    elif metric == model.FLOOR_RATIO:
+        if pct > budget.floor_ratio_pct:
+            return f"dispatch slowed against the kernel floor (+{pct:.1f}% > {budget.floor_ratio_pct}%)"
     elif metric.quantity == "slips" and now > before:
         return "more slips"
     return ""

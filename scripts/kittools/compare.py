@@ -55,6 +55,15 @@ def metrics(data: VariantData) -> dict[MetricId, float]:
         values[model.slips(name)] = rg.int("slips")
     for task in run.of_kind("TASK"):
         values[model.cpu_share(task.fields["name"])] = task.int("cpu_permille") / 10
+    floors = run.of_kind("FLOOR")  # kittools.floor: the kernel floor of the model's path
+    rate_groups = run.of_kind("RG")
+    if len(floors) == 1:
+        floor = floors[0]
+        for stat in model.STATS:
+            values[model.floor_latency(stat)] = _us(floor.int(stat), floor.int("cycles_hz"))
+        if rate_groups and floor.int("p50") > 0:
+            # Both in cycles of the same counter (the floor's stamp is the deployment's)
+            values[model.FLOOR_RATIO] = round(rate_groups[0].int("latency_p50") / floor.int("p50"), 2)
     return values
 
 

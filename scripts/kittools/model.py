@@ -17,7 +17,7 @@ from typing import Any
 SCHEMA_VERSION = 2
 
 #: Units of a metric, and how a label names them
-UNITS = {"bytes": "bytes", "us": "us", "count": "", "pct": "%"}
+UNITS = {"bytes": "bytes", "us": "us", "count": "", "pct": "%", "x": "x"}
 #: Statistics of a distribution metric
 STATS = ("p50", "p99", "max")
 #: Per-rate-group quantities measured as distributions (RG records' field prefixes)
@@ -83,6 +83,15 @@ def cpu_share(task: str) -> MetricId:
     return MetricId("task", task, "cpu", unit="pct")
 
 
+def floor_latency(stat: str) -> MetricId:
+    """The kernel floor of the model's dispatch path (kittools.floor), in µs."""
+    return MetricId("floor", "kernel", "latency", stat, "us")
+
+
+#: The fastest rate group's latency p50 over its path's kernel floor p50
+FLOOR_RATIO = MetricId("floor", "fastest_rg", "ratio", "p50", "x")
+
+
 # The labels, all in one place: fixed metrics by id, per-group ones by quantity
 LABELS: dict[MetricId, str] = {
     ROM: "ROM (bytes)",
@@ -92,6 +101,8 @@ LABELS: dict[MetricId, str] = {
     HEAP_LINK: "heap, ground link's buffers and queues (bytes, part of the F´ allocator's)",
     STACKS_RESERVED: "stacks reserved (bytes)",
     STACKS_USED: "stacks used, peak (bytes)",
+    **{floor_latency(stat): f"kernel floor of its dispatch path, latency {stat} (us)" for stat in STATS},
+    FLOOR_RATIO: "fastest rate group's latency p50 over that floor's p50 (x)",
 }
 QUANTITY_LABELS = {"latency": "latency", "exec": "exec", "jitter": "period error", "slips": "slips",
                    "cpu": "CPU share"}

@@ -10,7 +10,7 @@ import json
 from pathlib import Path
 from typing import Any
 
-from . import compare, conditions, console, model, modules, serial_sweep, sizing, symbols
+from . import compare, conditions, console, floor, model, modules, serial_sweep, sizing, symbols
 from .footprint import measure
 from .workspace import KitError
 
@@ -106,16 +106,18 @@ def _same_board(platform: str, board: str) -> bool:
     return platform == board or platform.startswith(board + "/")
 
 
-def suite_builds(twister_out: Path, board: str | None = None) -> list[tuple[str, Path]]:
-    """(platform, build folder) of every configuration of the suite twister
-    built (one per execution model and board), on `board` or on all."""
+def suite_builds(twister_out: Path, board: str | None = None, prefix: str = "kit.") -> list[tuple[str, Path]]:
+    """(platform, build folder) of every configuration twister built whose
+    name starts with `prefix`, on `board` or on all: by default the suite's
+    (tests/deployment: one per execution model and board); "floor." for the
+    kernel floor's (tests/floor)."""
     report = twister_out / "twister.json"
     if not report.is_file():
         raise KitError(f"no twister report at {report}")
     found = []
     for suite in json.loads(report.read_text()).get("testsuites", []):
         platform, name = suite.get("platform", ""), suite.get("name", "").rsplit("/", 1)[-1]
-        if (board is None or _same_board(platform, board)) and name.startswith("kit.") \
+        if (board is None or _same_board(platform, board)) and name.startswith(prefix) \
                 and suite.get("status") not in ("filtered", "skipped"):
             found.append((platform, twister_build(twister_out, platform, name)))
     return sorted(found, key=lambda pair: (pair[0], pair[1].name))
@@ -140,10 +142,18 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
     builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
               if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]
     reports = modules.reports([build for _, build, _ in builds])
+    floor_builds = [build for _, build in suite_builds(twister_out, board, floor.PREFIX)]
+    floors, zephyr_figures = floor.records(floor_builds), floor.zephyr_records(floor_builds)
     for (platform, build, run), (rom, ram) in zip(builds, reports, strict=True):
         sweep = played(build, "load")
         if sweep is not None:
             run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
+        # The kernel floor of the model's dispatch path, on this board
+        path = floor.path_of(run)
+        if path in floors:
+            run.records.append(floors[path])
+        if path == floor.PATH_OF_CONTEXT["thread"]:  # Zephyr's own figures, for the threaded paths
+            run.records += zephyr_figures
         serial = integration_logs(log_dir, platform, build.name) / SERIAL_SWEEP_FILE if log_dir is not None else None
         if serial is not None and serial.is_file():
             run.records += serial_sweep.records_of(serial)

@@ -15,7 +15,8 @@ from .model import Results
 SYMBOL_ROWS = 25
 
 #: The metrics of the boards-side-by-side table, before every rate group's p99 latency and slips
-BOARD_METRICS = (model.ROM, model.RAM, model.STACKS_RESERVED, model.STACKS_USED, model.HEAP_FPRIME_PEAK)
+BOARD_METRICS = (model.ROM, model.RAM, model.STACKS_RESERVED, model.STACKS_USED, model.HEAP_FPRIME_PEAK,
+                 model.FLOOR_RATIO)
 
 
 def metrics_table(data: Results) -> Table:
@@ -84,6 +85,15 @@ def record_tables(data: Results) -> list[Table]:
                       ("guard_max", "guard max")]),
         record_table(data, "PROBE", "Instrumentation cost (counter cycles per rate-group cycle)",
                      [("cycles_per_cycle", "cycles")]),
+        record_table(data, "FLOOR", "The kernel floor under each model's dispatch (tests/floor, counter cycles "
+                                    "from the tick's stamp: wfi, a thread-less main loop waking from WFI; msgq, a "
+                                    "thread woken by the tick handing it through a k_msgq to a less urgent one); "
+                                    "the fastest rate group's latency over it is in the side-by-side table",
+                     [("path", "path"), ("samples", "samples"), ("p50", "p50"), ("p99", "p99"), ("max", "max")]),
+        record_table(data, "ZEPHYR", "Zephyr's own latency_measure benchmark, beside the threaded models (same "
+                                     "board conditions; Zephyr's timing API over the same cycle counter, the "
+                                     "benchmark's own timestamp overhead subtracted)",
+                     [("metric", "metric"), ("description", "what"), ("cycles", "cycles"), ("ns", "ns")]),
     )
     return [t for t in found if t is not None]
 

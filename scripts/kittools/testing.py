@@ -251,37 +251,49 @@ def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
 INTEGRATION = KIT_ROOT / "tests" / "integration"
 
 
-# One build at a time: two stations at once once missed a first NO_OP's
-# 10 s (the API's time-outs are the host's), and on two cores they gained
-# little (157 s against 207 s). See the README's ground-link section.
+# The checks through fprime-gds and the serial-load sweep run one build at a
+# time: the integration API's time-outs are the host's (two stations at once
+# once missed a first NO_OP's 10 s), and the sweep paces its uplink by what
+# the host sees. Fuzzing and the foreign dictionary wait for the
+# deployment's answers, however long the host takes: two builds at a time,
+# one QEMU per core (fuzzing's pace is the deployment's uplink, 64 bytes per
+# 100 Hz poll of the link UART, not the host's CPU).
 INTEGRATION_JOBS = 1
+RAW_LINK_JOBS = 2
 
 
-def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS) -> Tally:
-    """tests/integration (F´'s integration-test API, through fprime-gds's
-    pytest plugin) against every build of the suite, `jobs` builds at a
-    time: each booted under QEMU into its ground scenario with fprime-gds on
-    its link (kittools.ground), then fuzzed and swept. Two builds never share
-    a QEMU pipe, a link socket or a GDS transport (each station's is its
-    own), and what is timed is virtual time. The kit's own runner, not
-    twister's pytest harness: that harness owns one console and knows
-    nothing of a second serial port or a GDS."""
+def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: int = RAW_LINK_JOBS) -> Tally:
+    """The ground-link checks of every build of the suite, each booted under
+    QEMU into its ground scenario: first tests/integration (F´'s
+    integration-test API, through fprime-gds's pytest plugin, with
+    fprime-gds on the build's link: kittools.ground) and the serial-load
+    sweep, `jobs` builds at a time; then the foreign dictionary and uplink
+    fuzzing, `raw_link_jobs` builds at a time. Two builds never share a QEMU
+    pipe, a link socket or a GDS transport (each station's is its own). The
+    kit's own runner, not twister's pytest harness: that harness owns one
+    console and knows nothing of a second serial port or a GDS."""
     builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
               if ground.serves_ground(build)]
     if not builds:
         raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
     tally = Tally()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        for result in pool.map(lambda pair: ground_checks(pair[0], pair[1], log_dir), builds):
-            tally.add(result)
+    for checks, workers in ((station_checks, jobs), (raw_link_checks, raw_link_jobs)):
+        with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
+            for result in pool.map(checks, [p for p, _ in builds], [b for _, b in builds],
+                                   [log_dir] * len(builds)):
+                tally.add(result)
     return tally
 
 
-def ground_checks(platform: str, build: Path, log_dir: Path) -> Tally:
-    """One build's ground-link checks, one after another (they share its
-    QEMU pipe and link socket): the integration suite, the foreign
-    dictionary, fuzzing, the serial-load sweep."""
-    name = f"{platform.replace('/', '_')}_{build.name}"
+def _ground_name(platform: str, build: Path) -> str:
+    return f"{platform.replace('/', '_')}_{build.name}"
+
+
+def station_checks(platform: str, build: Path, log_dir: Path) -> Tally:
+    """One build's checks that need the host to themselves, one after the
+    other (they share its QEMU pipe and link socket): the integration suite
+    through fprime-gds, then the serial-load sweep."""
+    name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
     xml = logs / "pytest.xml"
     started = time.monotonic()
@@ -296,9 +308,18 @@ def ground_checks(platform: str, build: Path, log_dir: Path) -> Tally:
     tally = junit_tally(xml)
     print(f"[kit]   {name}: {tally.passed} passed, {tally.failed} failed "
           f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
-    tally.add(foreign_dictionary_build(build, name, logs))
-    tally.add(fuzz_build(build, name, logs))
     tally.add(serial_sweep_build(build, name, logs))
+    return tally
+
+
+def raw_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
+    """One build's checks on the raw link, paced by the deployment's own
+    answers, one after the other: another build's dictionary refused, then
+    uplink fuzzing."""
+    name = _ground_name(platform, build)
+    logs = results.integration_logs(log_dir, platform, build.name)
+    tally = foreign_dictionary_build(build, name, logs)
+    tally.add(fuzz_build(build, name, logs))
     return tally
 
 
