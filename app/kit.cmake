@@ -29,7 +29,7 @@ kit_require_workspace("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake"
 # are Kconfig choices (app/Kconfig), and the board's defaults per model are
 # its Kconfig.defconfig, sourced by app/Kconfig through this generated file.
 if(NOT DEFINED CONF_FILE)
-    set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_ROOT}/app/clock.conf" "${KIT_BOARD_DIR}/kit.conf")
+    set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_BOARD_DIR}/kit.conf")
 endif()
 if(NOT DTC_OVERLAY_FILE)
     set(DTC_OVERLAY_FILE "${KIT_BOARD_DIR}/app.overlay")

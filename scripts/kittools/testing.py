@@ -17,7 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import budget, console, fuzz, ground, modules, results, runner, serial_sweep, sizing, sweep, symbols
+from . import budget, console, floor, fuzz, ground, modules, results, runner, serial_sweep, sizing, sweep, symbols
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
@@ -184,6 +184,8 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
         shutil.rmtree(runs)
+    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{floor.CONSOLE_LOG}"):  # the kernel floor's records
+        console_log.unlink()
     # ... and so does the last run's report: a twister that dies before
     # writing its own must not be counted by the last one's
     (out_dir / "twister.json").unlink(missing_ok=True)
