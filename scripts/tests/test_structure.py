@@ -82,3 +82,21 @@ def test_every_board_folder_has_what_the_build_checks():
     for board in (KIT_ROOT / "boards").iterdir():
         for name in ("kit.conf", "Kconfig.defconfig", "Tables.fpp"):
             assert (board / name).is_file(), f"boards/{board.name}/{name} is missing"
+
+
+def test_board_fragments_hold_only_zephyrs_own_symbols():
+    # boards/<board>/kit.conf is also the configuration of tests/floor, plain
+    # Zephyr applications without the kit's Kconfig: a kit or F´ symbol there
+    # would stop their configure
+    for conf in (KIT_ROOT / "boards").glob("*/kit.conf"):
+        kit_symbols = re.findall(r"^\s*(CONFIG_(?:KIT|FW|FPRIME)_\w+)", conf.read_text(), re.MULTILINE)
+        assert not kit_symbols, f"{conf.relative_to(KIT_ROOT)} sets {kit_symbols}: put them in Kconfig.defconfig"
+
+
+def test_the_floor_and_the_suite_run_on_the_same_boards():
+    def platforms(path):
+        return yaml.safe_load(path.read_text())["common"]["platform_allow"]
+
+    suite = platforms(KIT_ROOT / "tests" / "deployment" / "testcase.yaml")
+    for floor in (KIT_ROOT / "tests" / "floor").glob("*/testcase.yaml"):
+        assert platforms(floor) == suite, f"{floor.relative_to(KIT_ROOT)} runs on other boards than the suite"
