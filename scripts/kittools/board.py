@@ -27,7 +27,8 @@ REFERENCE_BOARD = "qemu_cortex_m3"
 # build nothing else, and every measurement so far is a Cortex-M's
 SUPPORTED_ARCH = "arm"
 # Twister files whose platform lists name the kit's boards, relative to the kit
-TWISTER_GLOBS = ("tests/*/testcase.yaml", "app/sample.yaml")
+# The suite's, the kernel floor's (tests/floor/<app>/) and the samples'
+TWISTER_GLOBS = ("tests/*/testcase.yaml", "tests/*/*/testcase.yaml", "app/sample.yaml")
 TWISTER_LIST_KEYS = ("platform_allow", "integration_platforms")
 
 # What the porter must check in each file of the new folder (docs/porting.md)

@@ -315,8 +315,11 @@ def test_the_twister_files_are_every_suites_and_the_samples(tmp_path):
     root = _kit(tmp_path)
     (root / "tests" / "other").mkdir()
     (root / "tests" / "other" / "testcase.yaml").write_text("tests:\n  x:\n    platform_allow:\n      - a\n")
+    (root / "tests" / "floor" / "paths").mkdir(parents=True)
+    (root / "tests" / "floor" / "paths" / "testcase.yaml").write_text("tests:\n  y:\n    platform_allow:\n      - a\n")
     names = [str(p.relative_to(root)) for p in board.twister_files(root)]
-    assert names == ["tests/deployment/testcase.yaml", "tests/other/testcase.yaml", "app/sample.yaml"]
+    assert names == ["tests/deployment/testcase.yaml", "tests/other/testcase.yaml",
+                     "tests/floor/paths/testcase.yaml", "app/sample.yaml"]
 
 
 # --- the kit's own lookup of a board folder ---------------------------------
