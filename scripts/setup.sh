@@ -40,7 +40,10 @@ pip_install_stamped() {
   local args=()
   for f in "$@"; do args+=(-r "$f"); done
   say "python ($name): installing"
-  "$VENV/bin/pip" install -q "${args[@]}" || die "pip could not install $name requirements ($*)"
+  # --no-compile: Python compiles a module on its first import instead; pip
+  # would compile every file of every package up front (a third of the kit's
+  # install, 30 s against 20 s, most of it modules nothing here imports)
+  "$VENV/bin/pip" install -q --no-compile "${args[@]}" || die "pip could not install $name requirements ($*)"
   echo "$hash" >"$stamp"
 }
 
