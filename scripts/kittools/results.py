@@ -136,8 +136,9 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
     """Results of a twister run of tests/deployment on one board, in the
     results-file schema: per build (one per variant), the nominal scenario's
     records, footprint and modules, plus the sweep records of the load
-    scenario when it played, and those of the serial-load sweep `kit test`
-    ran on the build (under `log_dir`)."""
+    scenario when it played, those of the serial-load sweep `kit test`
+    ran on the build (under `log_dir`), and the kernel floor of the model's
+    dispatch path from the run's tests/floor builds (kittools.floor)."""
     found: list[compare.VariantData] = []
     builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
               if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]

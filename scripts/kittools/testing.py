@@ -409,10 +409,11 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
 def make_size_reports(twister_out: Path = TWISTER_OUT) -> None:
     """Zephyr's rom and ram reports of every build of the suite, all boards'
     at once (kittools.modules: most of a minute of one core each, two builds
-    at a time), before the budget steps read them board by board. Not beside
-    the ground link's checks, whose time-outs are the host's: those keep the
-    host to themselves, as they were measured. A failure is left to the
-    budget step, which makes the report again and says why."""
+    at a time), beside the determinism runs (`kit test`) and before the
+    budget steps read them board by board. Not beside the ground link's
+    checks, whose time-outs are the host's: those keep the host to
+    themselves, as they were measured. A failure is left to the budget step,
+    which makes the report again and says why."""
     try:
         modules.reports([build for _, build in results.suite_builds(twister_out)])
     except KitError:
