@@ -119,6 +119,7 @@ macro(kit_deployment)
             "${KIT_ROOT}/app/src/Report.cpp"
             "${KIT_ROOT}/app/src/Fatal.cpp"
             "${KIT_ROOT}/app/src/TickClock.cpp"
+            "${KIT_ROOT}/app/src/Stages.cpp"
             "${KIT_ROOT}/app/src/ModelChecks.cpp"
             ${KIT_SCENARIO_SOURCES}
             "${KIT_ROOT}/app/src/CountingAllocator.cpp"

@@ -13,3 +13,6 @@ set(KIT_MODEL_IMPLEMENTATIONS
     Os_Cpu_Baremetal
     Os_Memory_Baremetal
 )
+if(CONFIG_KIT_QUEUE_KIT)
+    list(APPEND KIT_MODEL_IMPLEMENTATIONS Kit_Os_Queue_Cooperative)  # no lock, no waiting (baremetal/Os)
+endif()

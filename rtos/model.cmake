@@ -9,3 +9,6 @@ set(KIT_MODEL_IMPLEMENTATIONS
     Kit_Os_Task_ZephyrPriority  # fprime-zephyr's task, with F´ priorities mapped onto Zephyr's
     Os_Mutex_Zephyr             # k_mutex / k_condvar
 )
+if(CONFIG_KIT_QUEUE_KIT)
+    list(APPEND KIT_MODEL_IMPLEMENTATIONS Kit_Os_Queue_Zephyr)  # semaphores and a spinlock (rtos/Os)
+endif()

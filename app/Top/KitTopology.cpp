@@ -7,6 +7,7 @@
 #include <zephyr/device.h>
 #include <zephyr/devicetree.h>
 #include <Fw/Types/Assert.hpp>
+#include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 
@@ -148,6 +149,9 @@ U32 expectedCycles(FwIndexType rg, U32 ticks) {
 }
 
 void setupTopology(const TopologyState& state) {
+    // The fastest group's dispatch is broken into stages: its queue and task
+    // know themselves by lying inside it, so watch it before they are made
+    Stages::watch(&rg1kHz, sizeof(rg1kHz));
     initComponents(state);
     setBaseIds();
     connectComponents();

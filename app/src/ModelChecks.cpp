@@ -16,6 +16,8 @@
 
 #if defined(CONFIG_KIT_MODEL_BAREMETAL)
 #include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
+#elif defined(CONFIG_KIT_MODEL_RTOS)
+#include "rtos/Os/PriorityMap.hpp"
 #endif
 
 namespace Kit {
@@ -54,6 +56,16 @@ static_assert(static_cast<int>(Priorities::comQueue) > static_cast<int>(Prioriti
                   static_cast<int>(Priorities::comQueue) > static_cast<int>(Priorities::tlmSend),
               "boards/<board>/Tables.fpp: the downlink (comQueue) must be more urgent than the events and "
               "telemetry services that feed it");
+// The tick thread sits just below the fastest rate group and above every
+// other task (rtos/Kconfig.model says why): a handed-over 1 kHz cycle runs
+// at once, and the tick still hands every slower group its cycle first
+static_assert(zephyrPriority(Priorities::rg1kHz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >= 0 &&
+                  zephyrPriority(Priorities::rg1kHz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) <
+                      CONFIG_MAIN_THREAD_PRIORITY &&
+                  zephyrPriority(Priorities::rg100Hz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >
+                      CONFIG_MAIN_THREAD_PRIORITY,
+              "boards/<board>/Tables.fpp and CONFIG_MAIN_THREAD_PRIORITY: only the fastest rate group (rg1kHz) "
+              "may be more urgent than the tick thread");
 // fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
 static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,
               "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model) must give one slot per active instance");

@@ -5,6 +5,7 @@
 // ======================================================================
 #include "app/src/Report.hpp"
 #include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
+#include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/GeneratedIds.hpp"
 #include "app/Top/KitTopology.hpp"
@@ -190,8 +191,27 @@ void hash() {
            static_cast<unsigned>(timing.sampleHash().value()));
 }
 
+namespace {
+void stages() {
+    // The fastest group's dispatch, stage by stage, net of the marks' cost;
+    // its latency line (KIT RG) is net of them too
+    const DispatchStages& stages = Stages::stages();
+    printk("KIT STAGES rg=%s complete=%u incomplete=%u marks=%u mark_cycles=%u\n", RATE_GROUPS[0].name,
+           static_cast<unsigned>(stages.complete()), static_cast<unsigned>(stages.incomplete()),
+           static_cast<unsigned>(DispatchStages::MARKS), static_cast<unsigned>(stages.markCost()));
+    for (U32 i = 0; i < DispatchStages::STAGES; i++) {
+        printk("KIT STAGE rg=%s name=%s", RATE_GROUPS[0].name, DispatchStages::stageName(i));
+        printStats("cycles", stages.stage(i));
+        printk("\n");
+    }
+}
+}  // namespace
+
 bool results(U32 ticks, U32 probeCost, const CountingAllocator& allocator) {
     const bool rgOk = rateGroups(ticks);
+    if (IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES)) {
+        stages();
+    }
     const bool heapOk = heap(allocator);
     hash();
     printk("KIT PROBE cycles_per_cycle=%u\n", static_cast<unsigned>(probeCost));

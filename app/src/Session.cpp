@@ -4,6 +4,7 @@
 // \brief  The shared main loop, segment by segment
 // ======================================================================
 #include "app/src/Session.hpp"
+#include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "app/src/Fatal.hpp"
@@ -66,6 +67,7 @@ void loop(U32 ticks, bool (*until)()) {
         // Hand over every tick that fired, in order: a main loop that fell
         // behind shows up as latency and slips, never as lost cycles.
         while (!stop && handled != fired && (ticks == 0 || handled < ticks)) {
+            Stages::tickTaken(TickClock::stampOf(handled));
             timing.tick();
             // The tick just handed over fired at its stamp; the next is due
             // a period later (already past if the loop is behind)
@@ -92,6 +94,7 @@ void serve(bool (*until)()) {
 
 void nextSegment() {
     timing.restart(hyperperiod());
+    Stages::reset();
 }
 
 U64 cyclesOf(U32 ticks) {

@@ -10,6 +10,7 @@
 // ======================================================================
 #include <Os/Os.hpp>
 
+#include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/CountingAllocator.hpp"
@@ -20,6 +21,7 @@
 namespace {
 
 constexpr U32 PROBE_CALIBRATION_PAIRS = 64;
+constexpr U32 STAGE_CALIBRATION_DISPATCHES = 64;
 
 Kit::CountingAllocator s_allocator;
 
@@ -34,7 +36,8 @@ int main() {
     const Kit::TopologyState state = {s_allocator};
     Kit::setupTopology(state);
     Kit::HeapMonitor::markInitialized();
-    // The probe's own cost, measured before the run so it does not disturb it
+    // The probes' own cost, measured before the run so it does not disturb it
+    Kit::Stages::calibrate(STAGE_CALIBRATION_DISPATCHES);
     const Kit::Scenario::Context context = {Kit::timing.measureProbeCost(PROBE_CALIBRATION_PAIRS), s_allocator};
     const bool passed = play(context);
     Kit::Report::end(passed);

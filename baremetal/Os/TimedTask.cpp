@@ -3,6 +3,7 @@
 // \title  TimedTask.cpp
 // ======================================================================
 #include "baremetal/Os/TimedTask.hpp"
+#include "app/Components/Timing/DispatchStages.hpp"
 
 #include <zephyr/kernel.h>
 #include <Fw/Types/Assert.hpp>
@@ -15,6 +16,9 @@ SliceRecord s_records[TimedTask::MAX_TASKS];
 FwSizeType s_count = 0;
 
 U32 timeSlice(SliceRecord& record) {
+    if (record.watched) {
+        Stages::mark(StageMark::PICKED);  // the TaskRunner reached the watched component's slice
+    }
     const U32 begin = k_cycle_get_32();
     record.routine(record.argument);
     const U32 cycles = k_cycle_get_32() - begin;  // modulo 2^32: one wrap is fine
@@ -32,7 +36,13 @@ void timedSlice(void* argument) {
 Os::TaskInterface::Status TimedTask::start(const Arguments& arguments) {
     FW_ASSERT(s_count < MAX_TASKS, static_cast<FwAssertArgType>(s_count));  // raise MAX_TASKS with the topology
     SliceRecord& record = s_records[s_count];
-    record = {arguments.m_routine, arguments.m_routine_argument, arguments.m_priority, 0, 0, 0};
+    record = {arguments.m_routine,
+              arguments.m_routine_argument,
+              arguments.m_priority,
+              0,
+              0,
+              0,
+              Stages::watches(arguments.m_routine_argument)};
     s_count++;
     Arguments timed(arguments);
     timed.m_routine = timedSlice;

@@ -22,6 +22,7 @@ struct SliceRecord {
     U32 slices;
     U64 cycles;
     U32 maxCycles;
+    bool watched;  //!< its component's dispatch is broken into stages (app/Components/Timing/DispatchStages.hpp)
 };
 
 class TimedTask final : public Os::Baremetal::BaremetalTask {

@@ -6,8 +6,9 @@ module Kit {
   # Written once in F´'s convention: a higher number is more urgent. The
   # baremetal TaskRunner runs tasks in this order within a pass; the RTOS
   # variant maps it onto Zephyr's preemptive priorities (lower is more urgent)
-  # in rtos/Os/PriorityMap.hpp. The tick (the main loop) is above all of them
-  # in both. Rate groups by rate, then the dispatcher, then the downlink
+  # in rtos/Os/PriorityMap.hpp. The tick (the main loop) is above every task
+  # but the fastest rate group (rtos; baremetal runs the tick first anyway).
+  # Rate groups by rate, then the dispatcher, then the downlink
   # above the services that feed it, then the background load. The downlink
   # (ComQueue) must be above them: it answers its own sends through its own
   # queue (comStatusIn), which asserts when full, and a feeder that runs
@@ -17,7 +18,10 @@ module Kit {
   # when its 10 Hz calls fill its queue, where the event logger drops (a
   # flood of events starved it on mps2/an385 rtos at 300 commands/s).
   module Priorities {
-    constant rg1kHz = 12
+    @ Above the tick (rtos: the main thread at F´ level 12, Zephyr's
+    @ CONFIG_MAIN_THREAD_PRIORITY 2), so its cycle runs the moment the tick
+    @ hands it over; everything below is below the tick
+    constant rg1kHz = 13
     constant rg100Hz = 11
     constant rg10Hz = 10
     constant cmdDisp = 6

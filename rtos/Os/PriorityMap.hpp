@@ -16,11 +16,14 @@ namespace Kit {
 
 //! Map F´ priority `fprime` onto a preemptive Zephyr priority.
 //! `preemptLevels` is CONFIG_NUM_PREEMPT_PRIORITIES (Zephyr priorities
-//! 0 .. preemptLevels-1); `reservedAbove` is the most urgent Zephyr priority
-//! left to the kit's own tick thread (CONFIG_MAIN_THREAD_PRIORITY): F´ tasks
-//! map strictly below it. Returns -1 when `fprime` does not fit.
-constexpr int zephyrPriority(unsigned long fprime, int preemptLevels, int reservedAbove) {
-    return (fprime > static_cast<unsigned long>(preemptLevels - 1 - (reservedAbove + 1)))
+//! 0 .. preemptLevels-1); `tick` is the level of the kit's own tick thread
+//! (CONFIG_MAIN_THREAD_PRIORITY), which no task may share: a task there
+//! would neither preempt the tick nor be preempted by it. The board's
+//! table decides which tasks sit above the tick (the fastest rate group)
+//! and which below. Returns -1 when `fprime` does not fit.
+constexpr int zephyrPriority(unsigned long fprime, int preemptLevels, int tick) {
+    return (fprime > static_cast<unsigned long>(preemptLevels - 1) ||
+            (preemptLevels - 1) - static_cast<int>(fprime) == tick)
                ? -1
                : (preemptLevels - 1) - static_cast<int>(fprime);
 }

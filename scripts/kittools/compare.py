@@ -55,6 +55,11 @@ def metrics(data: VariantData) -> dict[MetricId, float]:
         values[model.slips(name)] = rg.int("slips")
     for task in run.of_kind("TASK"):
         values[model.cpu_share(task.fields["name"])] = task.int("cpu_permille") / 10
+    stages = run.of_kind("STAGES")  # the fastest group's dispatch, stage by stage
+    if len(stages) == 1 and stages[0].int("complete") > 0:
+        for stage in run.of_kind("STAGE"):
+            for stat in ("p50", "p99"):
+                values[model.stage_latency(stage.fields["name"], stat)] = _us(stage.int(f"cycles_{stat}"), cycles_hz)
     floors = run.of_kind("FLOOR")  # kittools.floor: the kernel floor of the model's path
     rate_groups = run.of_kind("RG")
     if len(floors) == 1:

@@ -88,6 +88,12 @@ def floor_latency(stat: str) -> MetricId:
     return MetricId("floor", "kernel", "latency", stat, "us")
 
 
+def stage_latency(stage: str, stat: str) -> MetricId:
+    """One stage of the fastest rate group's dispatch (KIT STAGE, net of the
+    probe's own cost), in µs."""
+    return MetricId("stage", stage, "", stat, "us")
+
+
 #: The fastest rate group's latency p50 over its path's kernel floor p50
 FLOOR_RATIO = MetricId("floor", "fastest_rg", "ratio", "p50", "x")
 
@@ -112,6 +118,8 @@ def label(metric: MetricId) -> str:
     """What a reader sees for a metric: 'ROM (bytes)', 'rg1kHz latency p99 (us)'."""
     if metric in LABELS:
         return LABELS[metric]
+    if metric.group == "stage":
+        return f"fastest rate group's dispatch, stage {metric.name.replace('_', ' ')}, {metric.stat} (us)"
     words = [metric.name, QUANTITY_LABELS.get(metric.quantity, metric.quantity), metric.stat]
     unit = UNITS.get(metric.unit, metric.unit)
     return " ".join(w for w in words if w) + (f" ({unit})" if unit else "")

@@ -85,6 +85,19 @@ def record_tables(data: Results) -> list[Table]:
                       ("guard_max", "guard max")]),
         record_table(data, "PROBE", "Instrumentation cost (counter cycles per rate-group cycle)",
                      [("cycles_per_cycle", "cycles")]),
+        record_table(data, "STAGE", "The fastest rate group's dispatch, stage by stage (counter cycles from the "
+                                    "tick's stamp to its first member: the ISR's return and the loop or tick "
+                                    "thread waking; the rate group driver and the group's port serializing the "
+                                    "cycle; the queue's insert; the group's context picked, by a thread switch or "
+                                    "the TaskRunner's pass; the queue's remove; deserializing and the group's "
+                                    "handler up to its first member. Each stage is net of the probe mark that "
+                                    "ends it; the STAGES line gives that cost)",
+                     [("name", "stage"), ("cycles_min", "min"), ("cycles_p50", "p50"), ("cycles_p99", "p99"),
+                      ("cycles_max", "max")]),
+        record_table(data, "STAGES", "The stage probe (dispatches with every mark; marks per dispatch and one "
+                                     "mark's measured cost, taken out of the stages and of the group's latency)",
+                     [("rg", "rate group"), ("complete", "complete"), ("incomplete", "incomplete"),
+                      ("marks", "marks"), ("mark_cycles", "cycles per mark")]),
         record_table(data, "FLOOR", "The kernel floor under each model's dispatch (tests/floor, counter cycles "
                                     "from the tick's stamp: wfi, a thread-less main loop waking from WFI; msgq, a "
                                     "thread woken by the tick handing it through a k_msgq to a less urgent one); "

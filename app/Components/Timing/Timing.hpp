@@ -103,7 +103,8 @@ class Timing final : public TimingComponentBase {
     //! Back to the configured, empty state, in place (a record is ~1.6 KiB: no temporaries)
     void resetRecord(FwIndexType rateGroup);
     //! The probe's work at a cycle's start, and at its end (returns ticks late)
-    void recordStart(RateGroupRecord& rg, U32 now, U32 fired);
+    //! `probeCycles`: the dispatch-stage marks' cost on the way, out of the latency
+    void recordStart(RateGroupRecord& rg, U32 now, U32 fired, U32 probeCycles = 0);
     U32 recordEnd(RateGroupRecord& rg, U32 now, U32 fired);
 
     RateGroupRecord m_records[MAX_RATE_GROUPS];

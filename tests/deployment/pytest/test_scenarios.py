@@ -40,13 +40,19 @@ SOAK_TIMEOUT_PER_MINUTE_S = 120.0
 # baseline), nothing was allocated after init, the uplinked NO_OP completed
 # OK and its event reached the downlink, the 1 kHz group's queue held at most
 # the one pending cycle, or two where it slipped (its QUEUE line: the sizing
-# advice reads every queue's high-water mark from these), and the verdict.
+# advice reads every queue's high-water mark from these), the 1 kHz group's
+# dispatch stage by stage (DispatchStages.hpp), and the verdict.
 def _nominal(variant: str, fast_slips: str) -> list[str]:
     return [
         rf"KIT BANNER variant={variant} board=\S+ .* tick_hz=1000 .* icount_shift=[1-9]",
         rf"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
         r"KIT RG name=rg100Hz hz=100 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
         r"KIT RG name=rg10Hz hz=10 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
+        # every cycle of the 1 kHz group broken into stages (none missing a
+        # mark where none slipped), the probe's cost measured
+        rf"KIT STAGES rg=rg1kHz complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
+        r"marks=5 mark_cycles=[1-9][0-9]*$",
+        r"KIT STAGE rg=rg1kHz name=received_to_member cycles_min=[1-9]",
         r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
         r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
         r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",
