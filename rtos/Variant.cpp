@@ -3,9 +3,12 @@
 // \title  rtos/Variant.cpp
 // \brief  The rtos model's tick and rate-group dispatch: the threaded main loop's half
 //
-// The tick ISR wakes the main thread (the most urgent thread) with a
-// semaphore; it hands the tick to the rate group driver, whose rate groups are
-// threads that preempt everything less urgent. Nothing else to do per tick.
+// The tick ISR wakes the main thread with a semaphore; it hands the tick to
+// the rate group driver, whose rate groups are threads. The main thread sits
+// just below the 1 kHz group and above every other thread (rtos/Kconfig.model):
+// handing that group its cycle switches to it at once, then the tick goes on
+// to the slower groups, which preempt everything less urgent. Nothing else to
+// do per tick.
 // ======================================================================
 #include "app/src/Variant.hpp"
 
