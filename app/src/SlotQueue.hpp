@@ -68,7 +68,6 @@ class SlotQueue {
     bool full() const { return m_count == m_depth; }
     bool empty() const { return m_count == 0; }
     FwSizeType count() const { return m_count; }
-    FwSizeType depth() const { return m_depth; }
     FwSizeType maxSize() const { return m_maxSize; }
     FwSizeType highWater() const { return m_highWater; }
 
