@@ -10,7 +10,10 @@
 //    priority first (fprime-baremetal's TaskRunner::runAll);
 //  - budgeted (CONFIG_KIT_BAREMETAL_POLICY_BUDGETED): the 1 kHz group's
 //    task always, then each other task only if its anticipated slice fits
-//    before the next tick (baremetal/Os/BudgetedScheduler.hpp).
+//    before the next tick (baremetal/Os/BudgetedScheduler.hpp);
+//  - passive (CONFIG_KIT_BAREMETAL_POLICY_PASSIVE): the rate groups are
+//    passive, so handing the tick to the driver already ran every due
+//    group and its members; then every remaining task one slice, as pass.
 // Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"

@@ -22,11 +22,26 @@ const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
 };
 
 const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
-    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz}, {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
-    {"rg10Hz", &rg10Hz, sizeof(rg10Hz), &rg10Hz}, {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},
-    {"events", &events, sizeof(events), &events}, {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},
-    {"load", &load, sizeof(load), &load},         {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
+#if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz},
+    {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
+    {"rg10Hz", &rg10Hz, sizeof(rg10Hz), &rg10Hz},
+#endif
+    {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},
+    {"events", &events, sizeof(events), &events},
+    {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},
+    {"load", &load, sizeof(load), &load},
+    {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
 };
+
+namespace {
+// Members per rate group: the ports of the rate group class the build chose
+#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+constexpr FwIndexType RATE_GROUP_PORTS = PassiveRateGroupOutputPorts;  // app/config/AcConstants.fpp
+#else
+constexpr FwIndexType RATE_GROUP_PORTS = Svc::ActiveRateGroup::CONNECTION_COUNT_MAX;
+#endif
+}  // namespace
 
 const char* activeInstanceHolding(const void* address) {
     const U8* const byte = static_cast<const U8*>(address);
@@ -108,8 +123,8 @@ void configureTopology(const TopologyState& state) {
     rateGroupDriver.configure(dividers);
     timing.configure(RATE_GROUPS, RATE_GROUP_COUNT, TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
 
-    // Contexts are unused by the members; ActiveRateGroup wants one per port
-    U32 contexts[Svc::ActiveRateGroup::CONNECTION_COUNT_MAX] = {};
+    // Contexts are unused by the members; a rate group wants one per port
+    U32 contexts[RATE_GROUP_PORTS] = {};
     rg1kHz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
     rg100Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));
     rg10Hz.configure(contexts, FW_NUM_ARRAY_ELEMENTS(contexts));

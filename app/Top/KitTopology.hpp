@@ -21,7 +21,11 @@ struct ActiveInstance {
     FwSizeType size;
     const Fw::QueuedComponentBase* component;  //!< the same instance, as the owner of its message queue
 };
+#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 5;  //!< the rate groups are passive (app/Top/rategroups/)
+#else
 constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 8;
+#endif
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr

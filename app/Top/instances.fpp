@@ -55,20 +55,8 @@ module Kit {
   # task in that case until the kit's patch (baremetal/patches/).
   # ----------------------------------------------------------------------
 
-  instance rg1kHz: Svc.ActiveRateGroup base id 0x0100 \
-    queue size Queues.rateGroup \
-    stack size Stacks.rg1kHz \
-    priority Priorities.rg1kHz
-
-  instance rg100Hz: Svc.ActiveRateGroup base id 0x0200 \
-    queue size Queues.rateGroup \
-    stack size Stacks.rg100Hz \
-    priority Priorities.rg100Hz
-
-  instance rg10Hz: Svc.ActiveRateGroup base id 0x0300 \
-    queue size Queues.rateGroup \
-    stack size Stacks.rg10Hz \
-    priority Priorities.rg10Hz
+  # The rate groups, rg1kHz, rg100Hz and rg10Hz: app/Top/rategroups/
+  # (active, or passive with CONFIG_KIT_RATE_GROUPS_PASSIVE)
 
   instance cmdDisp: Svc.CommandDispatcher base id 0x0500 \
     queue size Queues.cmdDisp \

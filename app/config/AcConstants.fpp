@@ -5,7 +5,9 @@
 @ Members per active rate group (probe start + up to 8 components + probe end)
 constant ActiveRateGroupOutputPorts = 10
 
-constant PassiveRateGroupOutputPorts = 1
+@ Members per passive rate group (baremetal_passive: the same members as
+@ the active ones'; no other build has an instance, so no other pays)
+constant PassiveRateGroupOutputPorts = 10
 
 @ Rate groups driven by the tick: 1 kHz, 100 Hz, 10 Hz
 constant RateGroupDriverRateGroupPorts = 3

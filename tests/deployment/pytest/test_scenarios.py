@@ -42,7 +42,12 @@ SOAK_TIMEOUT_PER_MINUTE_S = 120.0
 # the one pending cycle, or two where it slipped (its QUEUE line: the sizing
 # advice reads every queue's high-water mark from these), the 1 kHz group's
 # dispatch stage by stage (DispatchStages.hpp), and the verdict.
-def _nominal(variant: str, fast_slips: str) -> list[str]:
+def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
+    # Passive rate groups have no queue: the stage probe sees the tick taken
+    # and the first member only (every dispatch counts as incomplete)
+    stages = (r"KIT STAGES rg=rg1kHz complete=0 incomplete=[1-9][0-9]* marks=5 mark_cycles=[1-9][0-9]*$" if passive
+              else rf"KIT STAGES rg=rg1kHz complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
+                   r"marks=5 mark_cycles=[1-9][0-9]*$")
     return [
         rf"KIT BANNER variant={variant} board=\S+ .* tick_hz=1000 .* icount_shift=[1-9]",
         rf"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
@@ -50,13 +55,12 @@ def _nominal(variant: str, fast_slips: str) -> list[str]:
         r"KIT RG name=rg10Hz hz=10 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
         # every cycle of the 1 kHz group broken into stages (none missing a
         # mark where none slipped), the probe's cost measured
-        rf"KIT STAGES rg=rg1kHz complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
-        r"marks=5 mark_cycles=[1-9][0-9]*$",
-        r"KIT STAGE rg=rg1kHz name=received_to_member cycles_min=[1-9]",
+        stages,
+        *([] if passive else [r"KIT STAGE rg=rg1kHz name=received_to_member cycles_min=[1-9]"]),
         r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
         r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
         r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",
-        r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12]$",
+        *([] if passive else [r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12]$"]),
     ]
 
 
@@ -141,6 +145,21 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
         ],
         "faults": FAULTS,
         "soak": _soak("baremetal_budgeted", "[0-9]+"),
+        "stack_overflow": _stack_overflow("main", BAREMETAL_STACK_FAULT),
+        "assert": ASSERT,
+    },
+    "baremetal_passive": {
+        "nominal": [*_nominal("baremetal_passive", "[0-9]+", passive=True),
+                    r"KIT END variant=baremetal_passive result=PASS"],
+        "load": [
+            r"KIT BANNER variant=baremetal_passive ",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz ",
+            r"KIT BREAK axis=slice rg=rg1kHz level=([0-9]+|none) unit=us$",
+            r"KIT LOAD commands=OK .* dropped=0",
+            r"KIT END variant=baremetal_passive result=PASS",
+        ],
+        "faults": FAULTS,
+        "soak": _soak("baremetal_passive", "[0-9]+"),
         "stack_overflow": _stack_overflow("main", BAREMETAL_STACK_FAULT),
         "assert": ASSERT,
     },
