@@ -13,10 +13,15 @@
 //    before the next tick (baremetal/Os/BudgetedScheduler.hpp);
 //  - passive (CONFIG_KIT_BAREMETAL_POLICY_PASSIVE): the rate groups are
 //    passive, so handing the tick to the driver already ran every due
-//    group and its members; then every remaining task one slice, as pass.
+//    group and its members; then the remaining tasks pass after pass until
+//    no message is queued or the next tick is due, as F´'s baremetal main
+//    loop runs its tasks until there is nothing left to do.
 // Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
+// Before any Zephyr header: F´'s Os::Queue has a status named EMPTY, a macro there
+#include "baremetal/Os/CooperativeQueue.hpp"
+
 #include "app/src/TickPath.h"
 #include "baremetal/Os/BudgetedScheduler.hpp"
 #include "baremetal/Os/TimedTask.hpp"
@@ -76,11 +81,34 @@ GuardBreach runPass() {
     return checkGuard();
 }
 
+// The tick at `nextTickAt` is not due yet
+bool beforeTick(U32 nextTickAt) {
+    return static_cast<I32>(nextTickAt - k_cycle_get_32()) > 0;
+}
+
 // The policy's tasks for one tick, then the stack guard
 GuardBreach runTick(U32 nextTickAt) {
 #if defined(CONFIG_KIT_BAREMETAL_POLICY_BUDGETED)
     BudgetedScheduler::runTick(nextTickAt);
     return checkGuard();
+#elif defined(CONFIG_KIT_BAREMETAL_POLICY_PASSIVE)
+    // One pass, as the pass policy: every task a slice, however late the
+    // loop is. Then a burst (the telemetry service's packets, a batch of
+    // ground commands and their events) is drained in the tick it arrived
+    // in, not one message per tick, so the next burst finds the queues
+    // empty. Slice by slice, so the next tick waits for one slice at most;
+    // bounded, so a task feeding itself cannot hold the loop.
+    GuardBreach breach = runPass();
+    for (U32 pass = 1; pass < DRAIN_PASSES && !breach.breached; pass++) {
+        for (FwSizeType task = 0; task < TimedTask::taskCount(); task++) {
+            if (CooperativeQueue::queuedMessages() == 0 || !beforeTick(nextTickAt)) {
+                return breach;
+            }
+            (void)TimedTask::runSlice(task);
+        }
+        breach = checkGuard();
+    }
+    return breach;
 #else
     (void)nextTickAt;  // the plain pass runs everything, whatever the time left
     return runPass();

@@ -198,9 +198,9 @@ void stages() {
     const DispatchStages& stages = Stages::stages();
     printk("KIT STAGES rg=%s complete=%u incomplete=%u marks=%u mark_cycles=%u\n", RATE_GROUPS[0].name,
            static_cast<unsigned>(stages.complete()), static_cast<unsigned>(stages.incomplete()),
-           static_cast<unsigned>(DispatchStages::MARKS), static_cast<unsigned>(stages.markCost()));
-    for (U32 i = 0; i < DispatchStages::STAGES; i++) {
-        printk("KIT STAGE rg=%s name=%s", RATE_GROUPS[0].name, DispatchStages::stageName(i));
+           static_cast<unsigned>(stages.marks()), static_cast<unsigned>(stages.markCost()));
+    for (U32 i = 0; i < stages.stageCount(); i++) {
+        printk("KIT STAGE rg=%s name=%s", RATE_GROUPS[0].name, stages.stageName(i));
         printStats("cycles", stages.stage(i));
         printk("\n");
     }

@@ -18,7 +18,8 @@ namespace Kit {
 namespace Stages {
 
 namespace {
-DispatchStages s_stages;
+// Passive rate groups are called in the tick, with no queue to mark
+DispatchStages s_stages(IS_ENABLED(CONFIG_KIT_RATE_GROUPS_PASSIVE));
 const U8* s_begin = nullptr;
 const U8* s_end = nullptr;
 }  // namespace
@@ -68,7 +69,7 @@ void calibrate(U32 dispatches) {
     for (U32 i = 0; i < dispatches; i++) {
         const U32 begin = TickClock::now();
         tickTaken(begin);
-        for (U32 m = static_cast<U32>(StageMark::SENT); m < DispatchStages::MARKS; m++) {
+        for (U32 m = static_cast<U32>(StageMark::SENT); m < s_stages.marks(); m++) {
             mark(static_cast<StageMark>(m));
         }
         total += TickClock::now() - begin;
@@ -76,7 +77,7 @@ void calibrate(U32 dispatches) {
         s_stages.settle();
     }
     s_stages.reset();
-    s_stages.setMarkCost(total / (dispatches * DispatchStages::MARKS));
+    s_stages.setMarkCost(total / (dispatches * s_stages.marks()));
 }
 
 const DispatchStages& stages() {

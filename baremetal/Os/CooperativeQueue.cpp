@@ -30,6 +30,8 @@ Os::QueueInterface::Status CooperativeQueue::create(FwEnumStoreType id,
 }
 
 void CooperativeQueue::teardown() {
+    FW_ASSERT(s_queued >= m_slots.count(), static_cast<FwAssertArgType>(s_queued));
+    s_queued -= m_slots.count();
     m_slots.release();
 }
 
@@ -52,6 +54,7 @@ Os::QueueInterface::Status CooperativeQueue::send(const U8* buffer,
         Stages::mark(StageMark::SENT);
     }
     m_slots.push(buffer, size, priority);
+    s_queued++;
     if (m_watched) {
         Stages::mark(StageMark::QUEUED);
     }
@@ -75,10 +78,18 @@ Os::QueueInterface::Status CooperativeQueue::receive(U8* destination,
         return QUEUE_EMPTY;
     }
     actualSize = m_slots.pop(destination, capacity, priority);
+    FW_ASSERT(s_queued > 0);
+    s_queued--;
     if (m_watched) {
         Stages::mark(StageMark::RECEIVED);
     }
     return Status::OP_OK;
+}
+
+FwSizeType CooperativeQueue::s_queued = 0;
+
+FwSizeType CooperativeQueue::queuedMessages() {
+    return s_queued;
 }
 
 FwSizeType CooperativeQueue::getMessagesAvailable() const {

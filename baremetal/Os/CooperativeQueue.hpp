@@ -46,7 +46,12 @@ class CooperativeQueue final : public Os::QueueInterface {
     FwSizeType getMessageHighWaterMark() const override;
     Os::QueueHandle* getHandle() override;
 
+    //! Messages waiting in every queue of the deployment: a main loop with
+    //! nothing queued has nothing left to run until the next tick
+    static FwSizeType queuedMessages();
+
   private:
+    static FwSizeType s_queued;  //!< the sum of every queue's count (only the main loop touches it)
     SlotQueue m_slots;
     bool m_watched = false;  //!< this queue's component is the one broken into stages
     CooperativeQueueHandle m_handle;

@@ -17,11 +17,18 @@ const char* const STAGE_NAMES[DispatchStages::STAGES] = {
     "picked_to_received",  // the queue's remove and copy
     "received_to_member",  // deserializing, the group's handler, up to its first member
 };
+// A passive group's: no queue between the tick and the group
+const char* const DIRECT_STAGE_NAMES[2] = {
+    "isr_to_taken",     // as above
+    "taken_to_member",  // the rate group driver, the group's port and handler, up to its first member
+};
 }  // namespace
 
-const char* DispatchStages::stageName(U32 stage) {
-    FW_ASSERT(stage < STAGES, static_cast<FwAssertArgType>(stage));
-    return STAGE_NAMES[stage];
+DispatchStages::DispatchStages(bool direct) : m_marks(direct ? 1 : MARKS) {}
+
+const char* DispatchStages::stageName(U32 stage) const {
+    FW_ASSERT(stage < this->stageCount(), static_cast<FwAssertArgType>(stage));
+    return m_marks == MARKS ? STAGE_NAMES[stage] : DIRECT_STAGE_NAMES[stage];
 }
 
 void DispatchStages::setMarkCost(U32 cycles) {
@@ -54,11 +61,11 @@ U32 DispatchStages::end(U32 now) {
     }
     m_open = false;
     const U32 marks = m_next;  // taken since (and including) the tick
-    if (marks != MARKS) {
+    if (marks != m_marks) {
         m_incomplete++;
         return marks * m_markCost;
     }
-    m_stamps[MARKS + 1] = now;
+    m_stamps[m_marks + 1] = now;
     m_closed = true;
     return marks * m_markCost;
 }
@@ -69,11 +76,11 @@ void DispatchStages::settle() {
     }
     m_closed = false;
     m_complete++;
-    for (U32 i = 0; i < STAGES; i++) {
+    for (U32 i = 0; i < this->stageCount(); i++) {
         const U32 raw = elapsedCycles(m_stamps[i], m_stamps[i + 1]);
         // Each stage ends at a mark of ours but the last (Timing's own stamp,
         // which its latency has always included): that mark's cost is ours
-        const U32 probe = (i + 1 < STAGES) ? m_markCost : 0;
+        const U32 probe = (i + 1 < this->stageCount()) ? m_markCost : 0;
         m_stages[i].add(raw > probe ? raw - probe : 0);
     }
 }

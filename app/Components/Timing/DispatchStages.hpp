@@ -18,6 +18,10 @@
 // that ends it, and the latency Timing records is net of every mark taken
 // on the way, so the probes leave the numbers as they would be without them.
 //
+// Passive rate groups (baremetal_passive) are called, not sent a message:
+// their dispatch is direct, the tick taken and then the first member, two
+// stages (isr_to_taken, taken_to_member).
+//
 // The class is plain C++ (host-tested); app/src/Stages.cpp holds the one
 // instance and the free functions the OS layers call.
 // ======================================================================
@@ -46,8 +50,16 @@ class DispatchStages {
     //! Stages: ISR stamp -> each mark -> the first member
     static constexpr U32 STAGES = MARKS + 1;
 
+    //! `direct`: the group is called in the tick (passive), its path the
+    //! tick taken and the first member; otherwise every mark, through its queue
+    explicit DispatchStages(bool direct = false);
+
+    //! Marks on this group's path (MARKS, or 1 when direct) and the stages between them
+    U32 marks() const { return m_marks; }
+    U32 stageCount() const { return m_marks + 1; }
+
     //! The stage names, for the record ("isr_to_taken", ...)
-    static const char* stageName(U32 stage);
+    const char* stageName(U32 stage) const;
 
     //! Cycles one mark costs (measured by the caller before the run)
     void setMarkCost(U32 cycles);
@@ -58,7 +70,7 @@ class DispatchStages {
     void begin(U32 isrStamp, U32 now);
     //! Whether `which` is the next mark of an open dispatch (the caller
     //! reads the clock only then: a mark that would be ignored costs nothing)
-    bool expects(StageMark which) const { return m_open && static_cast<U32>(which) == m_next; }
+    bool expects(StageMark which) const { return m_open && m_next < m_marks && static_cast<U32>(which) == m_next; }
     //! A mark at `now`; ignored unless expects(which)
     void mark(StageMark which, U32 now);
     //! The first member ran at `now`: the dispatch closes. Returns the
@@ -81,6 +93,7 @@ class DispatchStages {
 
   private:
     U32 m_stamps[STAGES + 1] = {};  //!< the ISR stamp, each mark, the first member
+    U32 m_marks;                    //!< marks on the path: MARKS, or 1 (direct)
     U32 m_next = 0;                 //!< the next mark expected of the open dispatch
     bool m_open = false;
     bool m_closed = false;  //!< a complete dispatch awaits settle()

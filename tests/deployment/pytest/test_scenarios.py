@@ -43,11 +43,11 @@ SOAK_TIMEOUT_PER_MINUTE_S = 120.0
 # advice reads every queue's high-water mark from these), the 1 kHz group's
 # dispatch stage by stage (DispatchStages.hpp), and the verdict.
 def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
-    # Passive rate groups have no queue: the stage probe sees the tick taken
-    # and the first member only (every dispatch counts as incomplete)
-    stages = (r"KIT STAGES rg=rg1kHz complete=0 incomplete=[1-9][0-9]* marks=5 mark_cycles=[1-9][0-9]*$" if passive
-              else rf"KIT STAGES rg=rg1kHz complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
-                   r"marks=5 mark_cycles=[1-9][0-9]*$")
+    # Passive rate groups have no queue: their path is the tick taken, then
+    # the first member (one mark, two stages)
+    marks, last_stage = ("1", "taken_to_member") if passive else ("5", "received_to_member")
+    stages = (rf"KIT STAGES rg=rg1kHz complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
+              rf"marks={marks} mark_cycles=[1-9][0-9]*$")
     return [
         rf"KIT BANNER variant={variant} board=\S+ .* tick_hz=1000 .* icount_shift=[1-9]",
         rf"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
@@ -56,7 +56,7 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
         # every cycle of the 1 kHz group broken into stages (none missing a
         # mark where none slipped), the probe's cost measured
         stages,
-        *([] if passive else [r"KIT STAGE rg=rg1kHz name=received_to_member cycles_min=[1-9]"]),
+        rf"KIT STAGE rg=rg1kHz name={last_stage} cycles_min=[1-9]",
         r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
         r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
         r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",

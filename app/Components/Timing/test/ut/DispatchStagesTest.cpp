@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The dispatch-stage probe's bookkeeping: stages from the marks, the marks'
 // cost out of each stage and handed back for the latency, marks out of
-// order ignored, dispatches missing a mark counted and left out.
+// order ignored, dispatches missing a mark counted and left out; a passive
+// group's direct path (the tick, then the member).
 #include <gtest/gtest.h>
 #include "app/Components/Timing/DispatchStages.hpp"
 
@@ -78,6 +79,23 @@ TEST(DispatchStages, EndWithoutBeginChangesNothing) {
     stages.setMarkCost(9);
     EXPECT_EQ(stages.end(5), 0u);
     EXPECT_EQ(stages.complete() + stages.incomplete(), 0u);
+}
+
+TEST(DispatchStages, DirectPathIsTheTickThenTheMember) {
+    DispatchStages stages(true);  // a passive group: called in the tick
+    stages.setMarkCost(10);
+    EXPECT_EQ(stages.marks(), 1u);
+    EXPECT_EQ(stages.stageCount(), 2u);
+    EXPECT_STREQ(stages.stageName(1), "taken_to_member");
+    stages.begin(1000, 1050);
+    EXPECT_FALSE(stages.expects(StageMark::SENT));  // no queue on its path: a stray mark costs nothing
+    stages.mark(StageMark::SENT, 1060);
+    EXPECT_EQ(stages.end(1200), 10u);  // the tick's mark only
+    stages.settle();
+    EXPECT_EQ(stages.complete(), 1u);
+    EXPECT_EQ(stages.incomplete(), 0u);
+    EXPECT_EQ(stages.stage(0).max(), 40u);   // net of the tick's mark
+    EXPECT_EQ(stages.stage(1).max(), 150u);  // ends at Timing's own stamp
 }
 
 }  // namespace
