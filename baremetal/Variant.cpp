@@ -81,10 +81,12 @@ GuardBreach runPass() {
     return checkGuard();
 }
 
+#if defined(CONFIG_KIT_BAREMETAL_POLICY_PASSIVE)
 // The tick at `nextTickAt` is not due yet
 bool beforeTick(U32 nextTickAt) {
     return static_cast<I32>(nextTickAt - k_cycle_get_32()) > 0;
 }
+#endif
 
 // The policy's tasks for one tick, then the stack guard
 GuardBreach runTick(U32 nextTickAt) {

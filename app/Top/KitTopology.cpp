@@ -23,14 +23,11 @@ const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
 
 const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
 #if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz},
-    {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
+    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz},         {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
     {"rg10Hz", &rg10Hz, sizeof(rg10Hz), &rg10Hz},
 #endif
-    {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},
-    {"events", &events, sizeof(events), &events},
-    {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},
-    {"load", &load, sizeof(load), &load},
+    {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},     {"events", &events, sizeof(events), &events},
+    {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},     {"load", &load, sizeof(load), &load},
     {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
 };
 

@@ -26,9 +26,9 @@ namespace {
 // Every active instance of the stack table, and the largest stack
 constexpr FwSizeType TABLE_STACKS[] = {
 #if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    Stacks::rg1kHz, Stacks::rg100Hz, Stacks::rg10Hz,  // passive rate groups run on the caller's stack
+    Stacks::rg1kHz,  Stacks::rg100Hz, Stacks::rg10Hz,  // passive rate groups run on the caller's stack
 #endif
-    Stacks::cmdDisp, Stacks::events, Stacks::tlmSend, Stacks::load, Stacks::comQueue,
+    Stacks::cmdDisp, Stacks::events,  Stacks::tlmSend, Stacks::load, Stacks::comQueue,
 };
 constexpr FwSizeType TABLE_ENTRIES = sizeof(TABLE_STACKS) / sizeof(TABLE_STACKS[0]);
 
