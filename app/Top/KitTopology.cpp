@@ -59,6 +59,10 @@ namespace {
 // Never instantiated.
 struct QueueOf : Fw::QueuedComponentBase {
     static const Os::Queue& of(const Fw::QueuedComponentBase& component) { return component.*(&QueueOf::m_queue); }
+    // F´'s count of messages its `drop` ports lost: a protected accessor, and not const
+    static FwSizeType dropped(const Fw::QueuedComponentBase& component) {
+        return (const_cast<Fw::QueuedComponentBase&>(component).*(&QueueOf::getNumMsgsDropped))();
+    }
 };
 
 }  // namespace
@@ -68,7 +72,8 @@ QueueUse queueUse(const ActiveInstance& instance) {
     const Os::Queue& queue = QueueOf::of(*instance.component);
     // Os::Generic::PriorityQueue (both models) keeps, per slot, the message
     // and two FwSizeType words (its index and the message's size)
-    return {queue.getDepth(), queue.getMessageSize() + 2 * sizeof(FwSizeType), queue.getMessageHighWaterMark()};
+    return {queue.getDepth(), queue.getMessageSize() + 2 * sizeof(FwSizeType), queue.getMessageHighWaterMark(),
+            QueueOf::dropped(*instance.component)};
 }
 
 namespace {

@@ -37,6 +37,7 @@ struct QueueUse {
     FwSizeType depth;
     FwSizeType slotBytes;
     FwSizeType highWater;
+    FwSizeType dropped;  //!< messages to the component's `drop` ports lost to a full queue
 };
 QueueUse queueUse(const ActiveInstance& instance);
 

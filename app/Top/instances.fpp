@@ -22,8 +22,13 @@ module Kit {
     # provoked (dropped and counted, never blocking the rate group)
     constant load = 10
     @ Downlink: one message per event or telemetry packet, and the link's
-    @ status handshake
-    constant comQueue = 8
+    @ status handshake. The telemetry service sends its packets in one
+    @ slice (39 channels, six to a 128-byte packet: up to 7), so the queue
+    @ holds that burst and the events behind it. 8 dropped a NO_OP's event
+    @ under uplink fuzzing on baremetal_passive (whose rate groups write
+    @ three channels every cycle); the fuzzing peaked at 9 on both boards
+    @ with 16 (KIT QUEUE's dropped= counts what a full queue lost)
+    constant comQueue = 12
   }
 
   @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:

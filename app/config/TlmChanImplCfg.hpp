@@ -5,7 +5,7 @@
 // asserts when it needs one more than it has: the bucket count must cover
 // every channel of the dictionary. The kit has 36 (the ground link's brought
 // it past the 32 this once held, unnoticed until the sizing advice counted
-// them); `scripts/kit test` fails when a build's dictionary outgrows it
+// them), 39 with passive rate groups; `scripts/kit test` fails when a build's dictionary outgrows it
 // (kittools.sizing). The slots only spread the search: fewer than the
 // components with channels (13) costs time, not correctness.
 #ifndef TLMCHANIMPLCFG_HPP_
@@ -15,8 +15,12 @@ namespace {
 enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
-    TLMCHAN_HASH_BUCKETS = 36        //!< Buckets: at least the number of channels
+#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+    TLMCHAN_HASH_BUCKETS = 39  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
+#else
+    TLMCHAN_HASH_BUCKETS = 36  //!< Buckets: at least the number of channels
+#endif
 };
-}
+}  // namespace
 
 #endif

@@ -238,9 +238,9 @@ void stacks() {
 void queues() {
     for (const ActiveInstance& instance : ACTIVE_INSTANCES) {
         const QueueUse use = queueUse(instance);
-        printk("KIT QUEUE name=%s depth=%u slot_bytes=%u high_water=%u\n", instance.name,
+        printk("KIT QUEUE name=%s depth=%u slot_bytes=%u high_water=%u dropped=%u\n", instance.name,
                static_cast<unsigned>(use.depth), static_cast<unsigned>(use.slotBytes),
-               static_cast<unsigned>(use.highWater));
+               static_cast<unsigned>(use.highWater), static_cast<unsigned>(use.dropped));
     }
 }
 

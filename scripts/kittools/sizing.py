@@ -179,10 +179,18 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
 
 def queue_advice(records: list[dict[str, str]]) -> list[Advice]:
     """Queue depths against the run's high-water marks (QUEUE records): a
-    measure of that run, not a bound; the depth must cover the worst case."""
-    return [Advice(f"queue of {r['name']}", f"queue size of {r['name']} (app/Top/instances.fpp)",
-                   int(r["depth"]), int(r["high_water"]), int(r["slot_bytes"]),
-                   "this run's high-water mark", must_fit=False) for r in records]
+    measure of that run, not a bound; the depth must cover the worst case.
+    A queue that dropped messages (dropped=, F´'s count for its `drop`
+    ports) was full: it needed at least one slot more."""
+    advice = []
+    for r in records:
+        depth, high_water, dropped = int(r["depth"]), int(r["high_water"]), int(r.get("dropped", 0))
+        needed, basis = high_water, "this run's high-water mark"
+        if dropped:
+            needed, basis = max(high_water, depth + 1), f"this run dropped {dropped} messages to a full queue"
+        advice.append(Advice(f"queue of {r['name']}", f"queue size of {r['name']} (app/Top/instances.fpp)",
+                             depth, needed, int(r["slot_bytes"]), basis, must_fit=False))
+    return advice
 
 
 def measure(build_dir: Path, queue_records: list[dict[str, str]] | None = None) -> Sizing:

@@ -29,6 +29,13 @@ def test_queues_are_advised_from_the_run_high_water_marks():
     assert (queue.current, queue.needed, queue.spare_bytes, queue.must_fit) == (8, 2, 888, False)
 
 
+def test_a_queue_that_dropped_needed_more():
+    [queue] = sizing.queue_advice([{"name": "comQueue", "depth": "8", "slot_bytes": "148", "high_water": "8",
+                                    "dropped": "3"}])
+    assert (queue.needed, queue.verdict) == (9, "below the measure")
+    assert "dropped 3 messages" in queue.basis
+
+
 def test_the_report_shows_sizing_and_ports(tmp_path):
     data = _results()
     cost = ports.PortCost([ports.InstancePorts("cmdDisp", "CommandDispatcherImpl", 1544, 14, 16, 280, 192)])

@@ -40,7 +40,8 @@ SOAK_TIMEOUT_PER_MINUTE_S = 120.0
 # baseline), nothing was allocated after init, the uplinked NO_OP completed
 # OK and its event reached the downlink, the 1 kHz group's queue held at most
 # the one pending cycle, or two where it slipped (its QUEUE line: the sizing
-# advice reads every queue's high-water mark from these), the 1 kHz group's
+# advice reads every queue's high-water mark from these), the downlink's
+# queue dropped nothing, the 1 kHz group's
 # dispatch stage by stage (DispatchStages.hpp), and the verdict.
 def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
     # Passive rate groups have no queue: their path is the tick taken, then
@@ -60,7 +61,9 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
         r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
         r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
         r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",
-        *([] if passive else [r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12]$"]),
+        *([] if passive else [r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12] dropped=0$"]),
+        # the downlink lost nothing to a full queue
+        r"KIT QUEUE name=comQueue depth=[1-9][0-9]* slot_bytes=[1-9][0-9]* high_water=[0-9]+ dropped=0$",
     ]
 
 
