@@ -209,5 +209,5 @@ def policy_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
             if unit == "us" and period > 0 and at_policy is not None and at_policy > period:
                 limit = (f"; a slice of {period:.0f} µs or more fits no tick: a cooperative policy can only "
                          f"postpone it, and {policy} misses deadlines from {sweep.level_text(at_policy, unit)}")
-            lines.append(f"{axis} load, {fastest}: {moved}{trade}{limit}.")
+            lines.append(f"{policy} against {base}, {axis} load, {fastest}: {moved}{trade}{limit}.")
     return lines

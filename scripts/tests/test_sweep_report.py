@@ -169,7 +169,8 @@ def test_a_policy_is_compared_with_its_model_and_its_shed_load_shown(tmp_path):
     assert found["baremetal_budgeted"].shed("slice", "rg1kHz", below=1500) == 4
     assert analysis.policy_pairs(data.names()) == [("baremetal", "baremetal_budgeted")]
     lines = analysis.sweep_guidance(data, found).lines
-    assert ("slice load, rg1kHz: baremetal_budgeted holds it up to 1500 µs where baremetal breaks at 1000 µs; "
+    assert ("baremetal_budgeted against baremetal, slice load, rg1kHz: "
+            "baremetal_budgeted holds it up to 1500 µs where baremetal breaks at 1000 µs; "
             "to do so it shed 4 load messages (its queue overflowed while it deferred them); a slice of 1000 µs "
             "or more fits no tick: a cooperative policy can only postpone it, and baremetal_budgeted misses "
             "deadlines from 1500 µs.") in lines
