@@ -5,6 +5,8 @@ the results; nothing here draws or renders."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from . import model, sweep
 from .document import CAVEAT, Text, fmt, kib
 from .model import Results
@@ -211,3 +213,67 @@ def policy_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
                          f"postpone it, and {policy} misses deadlines from {sweep.level_text(at_policy, unit)}")
             lines.append(f"{policy} against {base}, {axis} load, {fastest}: {moved}{trade}{limit}.")
     return lines
+
+
+def _known(data: Results, metric: model.MetricId) -> dict[str, float]:
+    """Each variant's value of a metric, for those that have it."""
+    return {v: x for v in data.names() if (x := data.variants[v].metric(metric)) is not None}
+
+
+def _leader(values: dict[str, float], show: Callable[[float], str]) -> str:
+    """The variant(s) with the lowest value, then every other's value."""
+    low = min(values.values())
+    best = [v for v, x in values.items() if x == low]
+    others = ", ".join(f"{v} {show(x)}" for v, x in values.items() if x != low)
+    return f"{', '.join(best)} ({show(low)}{'; ' + others if others else ''})"
+
+
+def choosing(data: Results, found: dict[str, sweep.Sweep]) -> Text:
+    """Every model at once, on each thing a team weighs when it chooses one:
+    which leads on this board, and the others' figures. Generated from the
+    numbers; a model without a figure is left out of that line."""
+    names = data.names()
+    lines: list[str] = []
+    if len(names) < 2:
+        return Text("Choosing a model", lines)
+    for what, metric in (("the least ROM", model.ROM), ("the least static RAM", model.RAM),
+                         ("the least stack reserved", model.STACKS_RESERVED)):
+        values = _known(data, metric)
+        if len(values) >= 2:
+            lines.append(f"For {what}: {_leader(values, kib)}.")
+    groups = [r["name"] for r in data.variants[names[0]].of_kind("RG")]
+    fastest = groups[0] if groups else ""
+    floor = _known(data, model.FLOOR_RATIO)
+    for stat, what in (("p50", "the shortest typical dispatch"), ("p99", "the shortest dispatch tail"),
+                       ("max", "the shortest worst dispatch")):
+        values = _known(data, model.rg_metric(fastest, "latency", stat))
+        if len(values) < 2:
+            continue
+        line = f"For {what} of {fastest} at zero load ({stat} latency): {_leader(values, lambda x: f'{x:.1f} µs')}"
+        if stat == "p50" and len(floor) >= 2:
+            line += "; over the kernel floor: " + ", ".join(f"{v} {x:.1f}x" for v, x in floor.items())
+        lines.append(line + ".")
+    for axis in dict.fromkeys(a for v in sorted(found) for a in found[v].axes()):
+        swept = {v: found[v] for v in sorted(found) if axis in found[v].axes()}
+        if len(swept) < 2:
+            continue
+        unit = next(iter(swept.values())).unit(axis)
+        breaks = {v: sw.breaking_point(axis, fastest) for v, sw in swept.items()}
+        held = [v for v, at in breaks.items() if at is None]
+        broke = {v: at for v, at in breaks.items() if at is not None}
+        most = max(sw.max_load(axis) for sw in swept.values())
+        if not broke:
+            lines.append(f"{axis} load: every model holds {fastest} up to {sweep.level_text(most, unit)}.")
+            continue
+        others = ", ".join(f"{v} {sweep.level_text(at, unit)}" for v, at in broke.items())
+        if held:
+            lines.append(f"{axis} load: only {', '.join(held)} held {fastest} to the end of the sweep "
+                         f"({sweep.level_text(most, unit)}); the others break at: {others}.")
+        else:
+            best = max(broke, key=lambda v: broke[v])
+            lines.append(f"{axis} load: {best} holds {fastest} longest; they break at: {others}.")
+        at_rest = [v for v, at in broke.items() if at == swept[v].series(axis, fastest)[0].level]
+        if at_rest:
+            lines.append(f"{axis} load: {', '.join(at_rest)} already miss {fastest}'s deadlines at the sweep's "
+                         f"lowest load on this board.")
+    return Text("Choosing a model: every model on each axis", lines)

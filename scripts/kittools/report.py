@@ -39,7 +39,8 @@ def sweep_sections(data: Results) -> list[Section]:
 
 def build_sections(data: Results, baseline: Results | None, limits: Budget) -> tuple[list[Section], list[str]]:
     names = data.names()
-    sections: list[Section] = [analysis.conditions_text(data), analysis.findings(data), tables.metrics_table(data)]
+    sections: list[Section] = [analysis.conditions_text(data), analysis.findings(data),
+                               analysis.choosing(data, analysis.sweeps(data)), tables.metrics_table(data)]
     sections += sweep_sections(data)
     violations: list[str] = []
     if baseline is not None:

@@ -71,6 +71,27 @@ def test_guidance_is_generated_from_the_numbers():
                          "reserved stack +0 B, 1,000 context switches per second.")
 
 
+def test_choosing_puts_every_model_on_each_axis(tmp_path):
+    data = results()
+    lines = analysis.choosing(data, analysis.sweeps(data)).lines
+    assert "For the least ROM: baremetal (93.8 KiB; rtos 99.6 KiB)." in lines
+    assert "For the least stack reserved: baremetal, rtos (2.0 KiB)." in lines  # a tie names both
+    assert ("slice load: only rtos held rg1kHz to the end of the sweep (2000 µs); the others break at: "
+            "baremetal 1000 µs.") in lines
+    report.write(data, tmp_path)
+    assert "## Choosing a model: every model on each axis" in (tmp_path / "report.md").read_text()
+
+
+def test_choosing_says_which_model_misses_with_nothing_added():
+    data = results()
+    found = analysis.sweeps(data)
+    text = console_log("rtos") + "\n" + "\n".join(sweep_lines("baremetal", 0))
+    found["rtos"] = sweep.of_records([{"kind": r.kind, **r.fields} for r in console.parse(text).records])
+    lines = analysis.choosing(data, found).lines
+    assert "slice load: baremetal holds rg1kHz longest; they break at: baremetal 1000 µs, rtos 0 µs." in lines
+    assert "slice load: rtos already miss rg1kHz's deadlines at the sweep's lowest load on this board." in lines
+
+
 def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
     report.write(results(), tmp_path)
     markdown = (tmp_path / "report.md").read_text()
