@@ -13,9 +13,9 @@
 //    before the next tick (baremetal/Os/BudgetedScheduler.hpp);
 //  - passive (CONFIG_KIT_BAREMETAL_POLICY_PASSIVE): the rate groups are
 //    passive, so handing the tick to the driver already ran every due
-//    group and its members; then the remaining tasks pass after pass until
-//    no message is queued or the next tick is due, as F´'s baremetal main
-//    loop runs its tasks until there is nothing left to do.
+//    group and its members; then one pass of the remaining tasks, then
+//    slice by slice until no message is queued or the next tick is due, as
+//    F´'s baremetal main loop runs its tasks until there is nothing left.
 // Rate groups never run inside the ISR.
 // ======================================================================
 #include "app/src/Variant.hpp"
