@@ -10,7 +10,13 @@
 #ifndef KIT_GENERATEDIDS_HPP
 #define KIT_GENERATEDIDS_HPP
 
+// The dispatcher in the build's form (app/Top/dispatcher/): the same
+// opcodes and event IDs in both
+#if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+#include "fprime-baremetal/Svc/PassiveCmdDispatcher/PassiveCmdDispatcherComponentAc.hpp"
+#else
 #include "Svc/CmdDispatcher/CommandDispatcherComponentAc.hpp"
+#endif
 #include "app/Components/Controller/ControllerComponentAc.hpp"
 #include "app/Components/Faults/FaultsComponentAc.hpp"
 #include "app/Components/Load/LoadComponentAc.hpp"
@@ -18,7 +24,13 @@
 
 namespace Kit {
 
-struct CmdDispIds : Svc::CommandDispatcherComponentBase {
+#if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+using CmdDispBase = Baremetal::PassiveCmdDispatcherComponentBase;
+#else
+using CmdDispBase = Svc::CommandDispatcherComponentBase;
+#endif
+
+struct CmdDispIds : CmdDispBase {
     static constexpr FwOpcodeType NO_OP = OPCODE_CMD_NO_OP;
     static constexpr FwEventIdType NO_OP_RECEIVED = EVENTID_NOOPRECEIVED;
     static constexpr FwEventIdType MALFORMED_COMMAND = EVENTID_MALFORMEDCOMMAND;

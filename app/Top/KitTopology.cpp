@@ -23,11 +23,16 @@ const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {
 
 const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
 #if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz},         {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
+    {"rg1kHz", &rg1kHz, sizeof(rg1kHz), &rg1kHz},
+    {"rg100Hz", &rg100Hz, sizeof(rg100Hz), &rg100Hz},
     {"rg10Hz", &rg10Hz, sizeof(rg10Hz), &rg10Hz},
 #endif
-    {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},     {"events", &events, sizeof(events), &events},
-    {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},     {"load", &load, sizeof(load), &load},
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    {"cmdDisp", &cmdDisp, sizeof(cmdDisp), &cmdDisp},
+#endif
+    {"events", &events, sizeof(events), &events},
+    {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},
+    {"load", &load, sizeof(load), &load},
     {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
 };
 
@@ -85,8 +90,11 @@ namespace {
 
 // F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
 // the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
-// The F´ allocator's memory ID of TlmLinearChan's table (CONFIG_KIT_TELEMETRY_LINEAR)
+// The F´ allocator's memory IDs of TlmLinearChan's table
+// (CONFIG_KIT_TELEMETRY_LINEAR) and PassiveCmdDispatcher's tables
+// (CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
 constexpr FwEnumStoreType TELEMETRY_STORE_ID = 2;
+constexpr FwEnumStoreType DISPATCHER_TABLES_ID = 3;
 
 // The F´ allocator's bytes the link's buffers, accumulator and queues took
 FwSizeType s_linkBufferBytes = 0;
@@ -172,6 +180,11 @@ void setupTopology(const TopologyState& state) {
     initComponents(state);
     setBaseIds();
     connectComponents();
+#if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    // fprime-baremetal's dispatcher takes its dispatch and tracking tables
+    // from F´'s allocator, and needs them before any command registers
+    cmdDisp.setup(DISPATCHER_TABLES_ID, state.allocator);
+#endif
     regCommands();
     configComponents(state);
     configureTopology(state);

@@ -21,11 +21,20 @@ struct ActiveInstance {
     FwSizeType size;
     const Fw::QueuedComponentBase* component;  //!< the same instance, as the owner of its message queue
 };
+//! The active instances: events, tlmSend, load, comQueue, and the rate
+//! groups (app/Top/rategroups/) and the dispatcher (app/Top/dispatcher/)
+//! where the build has them in their active form
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 5;  //!< the rate groups are passive (app/Top/rategroups/)
+constexpr FwSizeType ACTIVE_RATE_GROUPS = 0;
 #else
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 8;
+constexpr FwSizeType ACTIVE_RATE_GROUPS = 3;
 #endif
+#if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+constexpr FwSizeType ACTIVE_DISPATCHERS = 0;
+#else
+constexpr FwSizeType ACTIVE_DISPATCHERS = 1;
+#endif
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr

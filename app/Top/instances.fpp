@@ -15,7 +15,12 @@ module Kit {
     @ (Link.commandsInFlight, checked in app/src/ModelChecks.cpp), which
     @ leaves room for the call and the scripted uplink
     constant cmdDisp = 8
-    constant events = 8
+    @ Events arrive in bursts where a command is dispatched in its
+    @ sender's call (the passive dispatcher: the faults scenario's five
+    @ bad commands in one 10 Hz call filled 8 and dropped 2); the threaded
+    @ and cooperative dispatchers peaked at 8 there too (mps2/an385,
+    @ budgeted). EventManager drops what a full queue cannot take
+    constant events = 12
     constant tlmSend = 2
     # 8 slices (~80 ms at 100 Hz) or a burst of 8 with room for the next slice;
     # a longer burst overflows it, which is how an overrun of the load is
@@ -63,10 +68,8 @@ module Kit {
   # The rate groups, rg1kHz, rg100Hz and rg10Hz: app/Top/rategroups/
   # (active, or passive with CONFIG_KIT_RATE_GROUPS_PASSIVE)
 
-  instance cmdDisp: Svc.CommandDispatcher base id 0x0500 \
-    queue size Queues.cmdDisp \
-    stack size Stacks.cmdDisp \
-    priority Priorities.cmdDisp
+  # cmdDisp, the command dispatcher: app/Top/dispatcher/ (active, or passive
+  # with CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
 
   instance events: Svc.EventManager base id 0x0600 \
     queue size Queues.events \

@@ -8,7 +8,6 @@ module Kit {
     instance rg1kHz
     instance rg100Hz
     instance rg10Hz
-    instance cmdDisp
     instance events
     instance tlmSend
     instance load
@@ -32,6 +31,10 @@ module Kit {
     instance linkBuffers
     instance linkUart
     instance linkHealth
+
+    # The command dispatcher in the build's form, with the connection only
+    # that form has (app/Top/dispatcher/)
+    import Dispatcher
 
     command connections instance cmdDisp
     event connections instance events
@@ -62,7 +65,7 @@ module Kit {
       rg10Hz.RateGroupMemberOut[1] -> housekeeping.schedIn
       rg10Hz.RateGroupMemberOut[2] -> uplink.schedIn
       rg10Hz.RateGroupMemberOut[3] -> tlmSend.Run
-      rg10Hz.RateGroupMemberOut[4] -> cmdDisp.run
+      # [4]: the dispatcher's 10 Hz call, where it has one (app/Top/dispatcher/)
       rg10Hz.RateGroupMemberOut[5] -> load.burstIn
       rg10Hz.RateGroupMemberOut[6] -> faults.schedIn[2]
       rg10Hz.RateGroupMemberOut[7] -> comQueue.run

@@ -5,7 +5,8 @@
 // asserts when it needs one more than it has: the bucket count must cover
 // every channel of the dictionary. The kit has 36 (the ground link's brought
 // it past the 32 this once held, unnoticed until the sizing advice counted
-// them), 39 with passive rate groups; `scripts/kit test` fails when a build's dictionary outgrows it
+// them), three more with passive rate groups, three fewer with the passive
+// dispatcher; `scripts/kit test` fails when a build's dictionary outgrows it
 // (kittools.sizing). The slots only spread the search: fewer than the
 // components with channels (13) costs time, not correctness.
 #ifndef TLMCHANIMPLCFG_HPP_
@@ -15,8 +16,12 @@ namespace {
 enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
-#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE) && defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    TLMCHAN_HASH_BUCKETS = 36  //!< three more for the passive rate groups, three fewer for the passive dispatcher
+#elif defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
     TLMCHAN_HASH_BUCKETS = 39  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
+#elif defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    TLMCHAN_HASH_BUCKETS = 33  //!< PassiveCmdDispatcher has no channels, CommandDispatcher three
 #else
     TLMCHAN_HASH_BUCKETS = 36  //!< Buckets: at least the number of channels
 #endif

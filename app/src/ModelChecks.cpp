@@ -28,7 +28,10 @@ constexpr FwSizeType TABLE_STACKS[] = {
 #if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
     Stacks::rg1kHz,  Stacks::rg100Hz, Stacks::rg10Hz,  // passive rate groups run on the caller's stack
 #endif
-    Stacks::cmdDisp, Stacks::events,  Stacks::tlmSend, Stacks::load, Stacks::comQueue,
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    Stacks::cmdDisp,  // the passive dispatcher runs on its sender's stack
+#endif
+    Stacks::events,  Stacks::tlmSend, Stacks::load,   Stacks::comQueue,
 };
 constexpr FwSizeType TABLE_ENTRIES = sizeof(TABLE_STACKS) / sizeof(TABLE_STACKS[0]);
 
@@ -44,11 +47,13 @@ static_assert(TABLE_ENTRIES == ACTIVE_INSTANCE_COUNT,
               "the stack table (boards/<board>/Tables.fpp) and ACTIVE_INSTANCES (app/Top) must list the same "
               "active instances");
 
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
 // The dispatcher's queue asserts when full: the ground's commands in flight,
 // its 10 Hz telemetry call and a scripted command must all fit
 static_assert(Link::commandsInFlight + 2 <= Queues::cmdDisp,
               "Queues.cmdDisp (app/Top/instances.fpp) cannot hold Link.commandsInFlight ground commands, the "
               "dispatcher's 10 Hz call and a scripted command");
+#endif
 
 #if defined(CONFIG_KIT_MODEL_RTOS)
 // ComQueue answers each of its sends through its own queue, which asserts

@@ -140,7 +140,9 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
         found.append(Advice("packet buffer (bytes)", "CONFIG_FPRIME_COM_BUFFER_MAX_SIZE (modules/fprime/Kconfig)",
                             int(config["CONFIG_FPRIME_COM_BUFFER_MAX_SIZE"]), packet, 0,
                             f"the largest packet, {largest}; a byte's cost: kit footprint"))
-    dispatch = info.member("Svc::CommandDispatcherImpl", "m_entryTable")
+    # F´'s dispatcher holds its table; fprime-baremetal's passive one takes it from F´'s allocator
+    dispatch = (info.member("Svc::CommandDispatcherImpl", "m_entryTable")
+                or info.member("Baremetal::PassiveCmdDispatcher::CmdTables", "m_entryTable"))
     if dispatch is not None:
         found.append(Advice("command dispatch table", "CMD_DISPATCHER_DISPATCH_TABLE_SIZE "
                             "(app/config/CommandDispatcherImplCfg.hpp)", dispatch.count, commands,

@@ -50,6 +50,18 @@ def test_invalid_frames_are_invalid_and_seeded():
                 assert length + 12 > DEPLOYMENT.accumulator_size
 
 
+def test_a_truncated_frame_lacks_body_bytes_so_no_next_frame_completes_it():
+    FpFramerDeframer.set_constants()
+    rng = random.Random(3)
+    noop = link_client.frame(link_client.command(DEPLOYMENT.noop))
+    for _ in range(500):
+        data = fuzz.invalid_frame("truncated", rng, DEPLOYMENT)
+        (_, length) = link_client.HEADER.unpack_from(data)
+        assert len(data) < link_client.HEADER.size + length, data.hex()
+        packets, _, _ = FpFramerDeframer().deframe_all(data + noop + fuzz.PADDING, no_copy=False)
+        assert len(packets) <= 1, data.hex()
+
+
 def test_bad_payloads_are_well_framed():
     FpFramerDeframer.set_constants()
     rng = random.Random(2)
@@ -71,6 +83,25 @@ def test_outcome_names_every_shortfall():
     assert any("asserted or halted" in f and "FrameAccumulator.cpp:123" in f for f in failures)
     assert len(failures) == 2
     assert outcome.to_json()["seed"] == 1
+
+
+def test_bad_commands_count_from_the_dispatchers_events_in_either_form():
+    healthy = {"Kit.linkHealth.FramesDetected": 3, "Kit.linkHealth.Oversized": 0,
+               "Kit.linkHealth.UnknownPackets": 0, "Kit.linkHealth.CommandsDropped": 0}
+    # The passive dispatcher has no CommandErrors channel: its events alone count
+    passive = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1, dispatcher_telemetry=False)
+    passive.sent.update({"bad_opcode": 1, "bad_arguments": 1})
+    passive.telemetry = dict(healthy)
+    passive.events.update({"Kit.cmdDisp.InvalidCommand": 1, "Kit.cmdDisp.OpCodeError": 1})
+    assert passive.failures() == []
+    passive.events["Kit.cmdDisp.OpCodeError"] = 0
+    assert [f for f in passive.failures() if "refusal events" in f and ": 1, expected 2" in f]
+    # F´'s CommandDispatcher must count them in telemetry as well
+    active = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1)
+    active.sent.update(passive.sent)
+    active.telemetry = dict(healthy)
+    active.events.update({"Kit.cmdDisp.InvalidCommand": 1, "Kit.cmdDisp.OpCodeError": 1})
+    assert active.failures() == ["cmdDisp.CommandErrors: None, expected 2"]
 
 
 def test_adapter_reconnects_and_never_raises(tmp_path: Path):
