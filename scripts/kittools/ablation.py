@@ -64,6 +64,10 @@ SERVICE_KNOBS = (
     # comes out of the C heap, whose arena grows to hold it (app/Kconfig)
     Knob("telemetry store: TlmChan -> TlmLinearChan",
          ("CONFIG_KIT_TELEMETRY_LINEAR=y", "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=15360"), ("baremetal",)),
+    # fprime-baremetal's dispatcher (baremetal's passive policy has it
+    # already): no task, stack or queue; its tables from F´'s allocator
+    Knob("command dispatcher: CommandDispatcher -> PassiveCmdDispatcher",
+         ("CONFIG_KIT_CMD_DISPATCHER_PASSIVE=y",), ("baremetal",)),
 )
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from . import model, sweep
-from .document import CAVEAT, Text, fmt, kib
+from .document import CAVEAT, Table, Text, fmt, kib
 from .model import Results
 
 #: The knee of a sweep: the first load at which the fastest group's p99 is this much over its zero-load value
@@ -276,4 +276,94 @@ def choosing(data: Results, found: dict[str, sweep.Sweep]) -> Text:
         if at_rest:
             lines.append(f"{axis} load: {', '.join(at_rest)} already miss {fastest}'s deadlines at the sweep's "
                          f"lowest load on this board.")
+    lines += pair_guidance(data, found)
     return Text("Choosing a model: every model on each axis", lines)
+
+
+def _held_longest(breaking_point: int | None) -> float:
+    """Sort key: the model that breaks later first, one that never breaks before all."""
+    return -float("inf") if breaking_point is None else -breaking_point
+
+
+def pair_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
+    """One sentence per pair of models: where each stops holding the fastest
+    group on every load axis both swept, their tails at rest, and what the
+    second costs against the first. A policy against its own model has its
+    own sentences (policy_guidance)."""
+    names = data.names()
+    policies = set(policy_pairs(names))
+    groups = [r["name"] for r in data.variants[names[0]].of_kind("RG")] if names else []
+    fastest = groups[0] if groups else ""
+    p99 = _known(data, model.rg_metric(fastest, "latency", "p99"))
+    lines: list[str] = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if (a, b) in policies or (b, a) in policies:
+                continue
+            parts = []
+            both = [x for x in found[a].axes() if x in found[b].axes()] if a in found and b in found else []
+            for axis in both:
+                unit = found[a].unit(axis)
+                at = {v: found[v].breaking_point(axis, fastest) for v in (a, b)}
+                held = {v: break_text(at[v], found[v].max_load(axis), unit) for v in (a, b)}
+                if at[a] == at[b]:
+                    parts.append(f"{axis} load, both {held[a]}")
+                else:
+                    # the one that holds longer first: a missing break is the longest hold
+                    first, second = sorted((a, b), key=lambda v: _held_longest(at[v]))
+                    parts.append(f"{axis} load, {first} holds {fastest} to {held[first]} where {second} breaks "
+                                 f"at {held[second]}")
+            if a in p99 and b in p99:
+                parts.append(f"{fastest}'s p99 latency at rest {p99[b]:.1f} µs against {p99[a]:.1f} µs")
+            costs = []
+            for what, metric in (("ROM", model.ROM), ("static RAM", model.RAM),
+                                 ("reserved stack", model.STACKS_RESERVED)):
+                va, vb = data.variants[a].metric(metric), data.variants[b].metric(metric)
+                if va is not None and vb is not None:
+                    costs.append(f"{what} {vb - va:+,.0f} B")
+            if costs:
+                parts.append(f"{b} costs {', '.join(costs)}")
+            if parts:
+                lines.append(f"{b} against {a}: {'; '.join(parts)}.")
+    return lines
+
+
+#: Why an instance is a task (a thread or a cooperative task) in a model, or
+#: what its passive form is: F´ 4.1's and fprime-baremetal's components as the
+#: pinned versions have them (the kit's Kconfig help says the same)
+TASK_REASONS = {
+    "rg1kHz": "a passive form: F´'s PassiveRateGroup (baremetal_passive)",
+    "rg100Hz": "a passive form: F´'s PassiveRateGroup (baremetal_passive)",
+    "rg10Hz": "a passive form: F´'s PassiveRateGroup (baremetal_passive)",
+    "cmdDisp": "a passive form: fprime-baremetal's PassiveCmdDispatcher (baremetal_passive)",
+    "events": "no passive form: F´'s EventManager is active only",
+    "tlmSend": "no passive form: F´'s TlmChan and fprime-baremetal's TlmLinearChan are both active",
+    "comQueue": "no passive form: F´'s ComQueue is active only",
+    "load": "the kit's background load: a task by design",
+}
+#: CPU records that are not component tasks
+NOT_COMPONENTS = ("idle", "main")
+
+
+def tasks_table(data: Results) -> Table | None:
+    """Each component that is a task in some model, and what it is in each
+    (a thread, a cooperative task, or passive: run in its caller), from the
+    CPU records, with why it stays a task or what its passive form is."""
+    names = data.names()
+    kinds = {v: {r["name"]: r.get("context", "") for r in data.variants[v].of_kind("CPU")
+                 if r.get("name") not in NOT_COMPONENTS} for v in names}
+    components = sorted({c for found in kinds.values() for c in found})
+    if not components:
+        return None
+    shown = {"thread": "thread", "slice": "cooperative task"}
+
+    def cell(v: str, c: str) -> str:
+        if not data.variants[v].of_kind("CPU"):
+            return "-"  # no CPU records: nothing to say
+        if c not in kinds[v]:
+            return "passive (runs in its caller)"
+        kind = kinds[v][c] or data.variants[v].context_kind() or "task"  # older records: the TASK lines say
+        return shown.get(kind, kind)
+
+    return Table("What runs as a task in each model, and why", ["component", *names, "why"],
+                 [[c, *(cell(v, c) for v in names), TASK_REASONS.get(c, "-")] for c in components])

@@ -41,6 +41,9 @@ def build_sections(data: Results, baseline: Results | None, limits: Budget) -> t
     names = data.names()
     sections: list[Section] = [analysis.conditions_text(data), analysis.findings(data),
                                analysis.choosing(data, analysis.sweeps(data)), tables.metrics_table(data)]
+    tasks = analysis.tasks_table(data)
+    if tasks is not None:
+        sections.append(tasks)
     sections += sweep_sections(data)
     violations: list[str] = []
     if baseline is not None:

@@ -82,6 +82,38 @@ def test_choosing_puts_every_model_on_each_axis(tmp_path):
     assert "## Choosing a model: every model on each axis" in (tmp_path / "report.md").read_text()
 
 
+def test_choosing_compares_every_pair_of_models_from_the_numbers():
+    data = results()
+    lines = analysis.choosing(data, analysis.sweeps(data)).lines
+    p99 = {v: data.variants[v].metric(model.rg_metric("rg1kHz", "latency", "p99")) for v in ("baremetal", "rtos")}
+    assert (f"rtos against baremetal: slice load, rtos holds rg1kHz to none up to 2000 µs where baremetal breaks "
+            f"at 1000 µs; rg1kHz's p99 latency at rest {p99['rtos']:.1f} µs against {p99['baremetal']:.1f} µs; "
+            "rtos costs ROM +6,000 B, static RAM +12,000 B, reserved stack +0 B.") in lines
+
+
+def test_a_policy_against_its_own_model_is_not_compared_twice():
+    assert analysis.pair_guidance(results(), {}) != []  # two models: one pair
+    data = results()
+    data.variants["baremetal_budgeted"] = data.variants.pop("rtos")
+    assert analysis.pair_guidance(data, {}) == []
+
+
+def test_the_tasks_table_says_what_each_model_runs_as_a_task_and_why():
+    data = results()
+    table = analysis.tasks_table(data)
+    assert table is not None and table.columns == ["component", "baremetal", "rtos", "why"]
+    rows = {row[0]: row[1:] for row in table.rows}
+    assert "idle" not in rows and "main" not in rows
+    for component, (bare, rtos, why) in rows.items():
+        assert bare == "cooperative task" and rtos == "thread", component
+        assert why == analysis.TASK_REASONS.get(component, "-")
+    # rtos without its rate group's task: passive there
+    data.variants["rtos"].records = [r for r in data.variants["rtos"].records
+                                     if not (r["kind"] == "CPU" and r.get("name") == "rg1kHz")]
+    rows = {row[0]: row[1:] for row in analysis.tasks_table(data).rows}
+    assert rows["rg1kHz"][:2] == ["cooperative task", "passive (runs in its caller)"]
+
+
 def test_choosing_says_which_model_misses_with_nothing_added():
     data = results()
     found = analysis.sweeps(data)
