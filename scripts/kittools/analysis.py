@@ -305,14 +305,18 @@ def pair_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
             for axis in both:
                 unit = found[a].unit(axis)
                 at = {v: found[v].breaking_point(axis, fastest) for v in (a, b)}
-                held = {v: break_text(at[v], found[v].max_load(axis), unit) for v in (a, b)}
+                most = max(found[a].max_load(axis), found[b].max_load(axis))
                 if at[a] == at[b]:
-                    parts.append(f"{axis} load, both {held[a]}")
-                else:
-                    # the one that holds longer first: a missing break is the longest hold
-                    first, second = sorted((a, b), key=lambda v: _held_longest(at[v]))
-                    parts.append(f"{axis} load, {first} holds {fastest} to {held[first]} where {second} breaks "
-                                 f"at {held[second]}")
+                    same = (f"neither breaks up to {sweep.level_text(most, unit)}" if at[a] is None
+                            else f"both break at {sweep.level_text(at[a], unit)}")
+                    parts.append(f"{axis} load, {same}")
+                    continue
+                # the one that holds longer first: a missing break is the longest hold
+                first, second = sorted((a, b), key=lambda v: _held_longest(at[v]))
+                held = (f"through the sweep ({sweep.level_text(found[first].max_load(axis), unit)})"
+                        if at[first] is None else f"up to {sweep.level_text(at[first], unit)}")
+                parts.append(f"{axis} load, {first} holds {fastest} {held} where {second} breaks at "
+                             f"{sweep.level_text(at[second] or 0, unit)}")
             if a in p99 and b in p99:
                 parts.append(f"{fastest}'s p99 latency at rest {p99[b]:.1f} µs against {p99[a]:.1f} µs")
             costs = []
