@@ -58,6 +58,27 @@ foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig Tables.fpp app.overla
             "(see docs/porting.md).")
     endif()
 endforeach()
+# A real board's vendor HAL is a Zephyr module that west.yml allow-lists (at
+# the revision the pinned Zephyr's own manifest gives). Without it Zephyr
+# fails deep in its devicetree (a pinctrl include not found): the board's
+# folder names the module and its folder in the workspace (boards/<board>/hal),
+# and a workspace without it is refused here, saying what to do.
+if(EXISTS "${KIT_BOARD_DIR}/hal")
+    file(STRINGS "${KIT_BOARD_DIR}/hal" KIT_BOARD_HALS REGEX "^[a-z]")
+    foreach(KIT_BOARD_HAL IN LISTS KIT_BOARD_HALS)
+        string(REGEX MATCH "^([a-z0-9_]+)[ \t]+([^ \t]+)$" KIT_HAL_LINE "${KIT_BOARD_HAL}")
+        if(NOT KIT_HAL_LINE)
+            message(FATAL_ERROR "kit: boards/${KIT_BOARD}/hal: '${KIT_BOARD_HAL}' is not '<module> <folder>'")
+        endif()
+        if(NOT IS_DIRECTORY "${KIT_ROOT}/${CMAKE_MATCH_2}")
+            message(FATAL_ERROR
+                "kit: board '${KIT_BOARD_SPEC}' needs Zephyr's HAL module ${CMAKE_MATCH_1}, and the workspace "
+                "has no ${CMAKE_MATCH_2}.\n"
+                "west.yml must allow-list it (name-allowlist under the zephyr project); then run "
+                "scripts/setup.sh (it runs 'west update').")
+        endif()
+    endforeach()
+endif()
 
 # --- Toolchain --------------------------------------------------------
 # Default: Debian's arm-none-eabi GCC through Zephyr's gnuarmemb variant, with

@@ -95,8 +95,12 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 
 def cmd_test(args: argparse.Namespace) -> int:
-    boards = args.board or testing.suite_boards()
-    for board in boards:
+    # The real boards are built and not run (tests/boards): no budget, no
+    # ground link, nothing to play
+    real = testing.suite_boards(testing.BUILD_ONLY_SUITE)
+    boards = [b for b in args.board if b not in real] if args.board else testing.suite_boards()
+    built_only = [b for b in args.board if b in real] if args.board else real
+    for board in boards + built_only:
         check_board(board)
     check_provisioned()
     log_dir = Path(args.output).resolve()
@@ -120,16 +124,19 @@ def cmd_test(args: argparse.Namespace) -> int:
             threading.Thread(target=_settle, args=(size_reports, testing.make_size_reports), daemon=True).start()
             return testing.check_determinism(log_dir)
 
-        qemu_lane.append((f"twister suite under QEMU ({', '.join(boards)})",
-                          lambda: testing.run_twister(boards, log_dir)))
-        qemu_lane.append(("determinism: twister's binaries run again (size reports beside)", determinism))
+        built = f"; built only: {', '.join(built_only)}" if built_only else ""
+        qemu_lane.append((f"twister suite under QEMU ({', '.join(boards)}{built})",
+                          lambda: testing.run_twister(boards + built_only, log_dir)))
         # Before the budget: the board's report takes the serial-load sweep from it
         def ground() -> testing.Tally:
             host_lane_done.wait()
             size_reports.result()
             return testing.run_integration(log_dir)
 
-        qemu_lane.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep", ground))
+        if boards:  # what reads the runs: none on a board only built
+            qemu_lane.append(("determinism: twister's binaries run again (size reports beside)", determinism))
+            qemu_lane.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
+                              ground))
         for board in boards:
             qemu_lane.append((f"budget: {board} results against its baseline", functools.partial(budget, board)))
     if not args.skip_host:

@@ -16,14 +16,32 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
-from . import budget, console, floor, fuzz, ground, modules, results, runner, serial_sweep, sizing, sweep, symbols
+from . import (
+    budget,
+    console,
+    floor,
+    footprint,
+    fuzz,
+    ground,
+    modules,
+    results,
+    runner,
+    serial_sweep,
+    sizing,
+    sweep,
+    symbols,
+)
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
 SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
+#: Real boards, built and not run (no emulator): every model's build
+BUILD_ONLY_SUITE = KIT_ROOT / "tests" / "boards" / "testcase.yaml"
+BUILD_ONLY_PREFIX = "board."
 TWISTER_OUT = KIT_ROOT / "twister-out"
 
 
@@ -51,6 +69,13 @@ def twister_tally(path: Path) -> Tally:
         raise KitError(f"twister wrote no report at {path}")
     tally = Tally()
     for suite in json.loads(path.read_text()).get("testsuites", []):
+        if _built_only(suite):
+            # A real board's build (tests/boards): twister builds what it
+            # cannot run and says "not run"; a build that failed is an error
+            status = suite.get("status")
+            tally.passed += status == "not run"
+            tally.failed += status in ("failed", "error", "blocked")
+            continue
         statuses = [case.get("status") for case in suite.get("testcases") or []] or [suite.get("status")]
         for status in statuses:
             if status == "passed":
@@ -60,8 +85,13 @@ def twister_tally(path: Path) -> Tally:
     return tally
 
 
+def _built_only(suite: dict[str, Any]) -> bool:
+    return str(suite.get("name", "")).rsplit("/", 1)[-1].startswith(BUILD_ONLY_PREFIX)
+
+
 def suite_boards(suite: Path = SUITE) -> list[str]:
-    """The boards the suite runs on: its common platform_allow list."""
+    """The boards the suite runs on: its common platform_allow list (with
+    BUILD_ONLY_SUITE, the real boards built and not run)."""
     import yaml  # Zephyr's requirements bring PyYAML into the venv
 
     try:
@@ -80,7 +110,7 @@ _JOBS = re.compile(r"^INFO\s+-\s+JOBS: (?P<jobs>\d+)\s*$")
 _SELECTED = re.compile(r"^INFO\s+-\s+(?P<scenarios>\d+) test scenarios \((?P<configurations>\d+) configurations\) "
                        r"selected, (?P<filtered>\d+) configurations filtered \((?P<static>\d+) by static filter")
 _DONE = re.compile(r"^INFO\s+-\s+(?P<done>\d+)/(?P<total>\d+)\s+(?P<platform>\S+)\s+(?P<suite>\S+)\s+"
-                   r"(?P<status>[A-Z_]+)(?:\s+(?P<reason>.*?))?\s+\((?P<info>[^()]*)\)\s*$")
+                   r"(?P<status>NOT RUN|[A-Z_]+)(?:\s+(?P<reason>.*?))?\s+\((?P<info>[^()]*)\)\s*$")
 _SECONDS = re.compile(r"(?P<s>\d+(?:\.\d+)?)s\b")
 
 
@@ -200,7 +230,21 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     tally = twister_tally(out_dir / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)
+    say_built_only(out_dir)
     return tally
+
+
+def say_built_only(out_dir: Path = TWISTER_OUT) -> None:
+    """A line per real board's build (tests/boards): its ROM and RAM, as
+    built; nothing ran on it."""
+    try:
+        builds = results.suite_builds(out_dir, prefix=BUILD_ONLY_PREFIX)
+    except KitError:
+        return  # a build that failed: twister's tally counts it
+    for platform, build in builds:
+        size = footprint.measure(build)
+        print(f"[kit]   {platform} {build.name}: built, not run (no emulator; docs/porting.md): "
+              f"ROM {size.rom:,} of {size.rom_size:,} B, RAM {size.ram:,} of {size.ram_size:,} B", flush=True)
 
 
 def recorded_hashes(twister_out: Path) -> dict[tuple[str, Path, str], str]:

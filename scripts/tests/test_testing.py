@@ -18,6 +18,29 @@ def test_twister_tally_counts_failures_errors_and_blocks(tmp_path):
     assert (tally.passed, tally.failed) == (2, 3)
 
 
+def test_a_real_boards_build_counts_once_passed_if_built_and_failed_if_not(tmp_path):
+    report = tmp_path / "twister.json"
+    report.write_text(json.dumps({"testsuites": [
+        {"name": "tests/boards/board.baremetal", "status": "not run",
+         "testcases": [{"status": "not run"}, {"status": "not run"}]},
+        {"name": "tests/boards/board.rtos", "status": "error", "testcases": [{"status": "error"}]},
+        {"name": "tests/deployment/kit.rtos", "status": "not run", "testcases": [{"status": "not run"}]},
+    ]}))
+    tally = testing.twister_tally(report)
+    # a suite build not run (it should have run) counts neither way
+    assert (tally.passed, tally.failed) == (1, 1)
+
+
+def test_the_real_boards_build_every_variant_and_run_nothing():
+    import yaml
+
+    suite = yaml.safe_load(testing.BUILD_ONLY_SUITE.read_text())
+    assert suite["common"]["build_only"] is True
+    assert sorted(name.removeprefix(testing.BUILD_ONLY_PREFIX) for name in suite["tests"]) == sorted(
+        name.removeprefix("kit.") for name in yaml.safe_load(testing.SUITE.read_text())["tests"])
+    assert not set(testing.suite_boards(testing.BUILD_ONLY_SUITE)) & set(testing.suite_boards())
+
+
 def test_missing_twister_report_is_an_error(tmp_path):
     with pytest.raises(KitError, match="no report"):
         testing.twister_tally(tmp_path / "twister.json")
