@@ -57,10 +57,20 @@ def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
     return files, tally.failed == 0
 
 
+def check_runs_here(board: str) -> None:
+    """Refuse a real board where the command must run the deployment: the
+    kit builds it (tests/boards) and runs nothing on it yet."""
+    folder = check_board(board)
+    if folder in {check_board(real) for real in testing.suite_boards(testing.BUILD_ONLY_SUITE)}:
+        raise KitError(f"{board} is a real board: the kit builds it (kit test, tests/boards) but cannot run it "
+                       f"here (no emulator; device testing is not done yet). Boards it runs on: "
+                       f"{', '.join(testing.suite_boards())}")
+
+
 def cmd_compare(args: argparse.Namespace) -> int:
     boards = args.board or testing.suite_boards()
     for board in boards:
-        check_board(board)
+        check_runs_here(board)
     check_provisioned()
     out_dir = Path(args.output).resolve()
     with one_at_a_time("compare"):
@@ -181,7 +191,7 @@ def _run_steps(steps: list[tuple[str, Callable[[], testing.Tally]]]) -> testing.
 def _ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
     """The ground scenario's build of --board and --model, built or brought
     up to date; returns it and its logs folder."""
-    check_board(args.board)
+    check_runs_here(args.board)
     check_variant(args.model)
     check_provisioned()
     build_dir = ground.ground_build_dir(args.board, args.model)
@@ -259,7 +269,7 @@ def cmd_sizediff(args: argparse.Namespace) -> int:
 
 
 def cmd_footprint(args: argparse.Namespace) -> int:
-    check_board(args.board)
+    check_runs_here(args.board)
     profile, toward = ablation.check_profile(args.profile), ablation.check_profile(args.toward)
     models = args.model or list(VARIANTS)
     for model in models:

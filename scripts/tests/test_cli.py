@@ -19,6 +19,15 @@ def test_unknown_board_is_one_clear_error(capsys):
     assert err[0].startswith("kit: error: board 'nucleo_f429zi' has no kit port") and "docs/porting.md" in err[0]
 
 
+@pytest.mark.parametrize("command", [["compare", "--board", "nucleo_f401re"],
+                                     ["gds", "--board", "nucleo_f401re", "--model", "baremetal"]])
+def test_a_real_board_is_refused_where_the_deployment_must_run(command, tmp_path, capsys):
+    assert cli.main([*command, *(["--output", str(tmp_path / "out")] if command[0] == "compare" else [])]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "nucleo_f401re is a real board" in err[0] and "qemu_cortex_m3" in err[0]
+    assert not (tmp_path / "out").exists()
+
+
 def test_unprovisioned_workspace_is_one_clear_error(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(workspace, "DEPS", tmp_path / "deps")
     assert cli.main(["compare", "--board", "qemu_cortex_m3", "--output", str(tmp_path / "out")]) == 2
