@@ -5,7 +5,10 @@ Checks that the pinned Zephyr knows the board (a twister platform file names
 it), that it is an ARM board, and that its flash and RAM hold the deployment
 as measured on a ported board; then copies the reference board's folder with
 a TODO header in each file and adds the board to the twister files'
-platform lists. docs/porting.md is the checklist that follows.
+platform lists. A real board (no emulator) gets its vendor HAL (its file in
+the folder, west.yml's allow-list), a kit.conf without icount, a link UART
+from its devicetree, and joins the boards built and not run
+(tests/boards). docs/porting.md is the checklist that follows.
 """
 
 from __future__ import annotations
@@ -56,6 +59,40 @@ TODOS: dict[str, tuple[str, ...]] = {
     ),
 }
 DEFAULT_TODO = ("Copied from the reference board: check this file for the new board (docs/porting.md).",)
+# A real board's (docs/porting.md, "A real board"): no icount, its own UARTs and timer
+REAL_TODOS: dict[str, tuple[str, ...]] = {
+    "kit.conf": (
+        "Console: the run's record goes to the zephyr,console UART (often the debugger's virtual COM port).",
+        "Tick and timestamps: 1 kHz system timer; check cycles_hz in the banner on the board.",
+        "Zephyr symbols only here; a kit symbol belongs in Kconfig.defconfig.",
+    ),
+    "app.overlay": (
+        "Devicetree copied from a QEMU board: choose a UART of this board's devicetree for the ground",
+        "link (kit,link-uart: not the console; enabled, with its pins) and say how to wire it.",
+    ),
+}
+REAL_KIT_CONF = """# SPDX-License-Identifier: Apache-2.0
+# {identifier}: a real board, built by the kit for every execution model and
+# not run (tests/boards/testcase.yaml). No QEMU icount: the cycle counter is
+# the part's own timer, and times vary from run to run as hardware does.
+"""
+REAL_OVERLAY = """/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The kit's ground link: F´'s comm stack talks to the ground over this UART
+ * (app/Top/KitTopology.cpp), one the board's devicetree enables that is not
+ * its console (the run's record). Wire a 3.3 V USB-serial adapter to its pins.
+ */
+/ {{
+	chosen {{
+		kit,link-uart = &{uart};
+	}};
+}};
+"""
+HAL_FILE = """# The Zephyr modules this board needs beyond CMSIS (app/board.cmake refuses
+# a workspace without them): the module's name in Zephyr's manifest, and its
+# folder in the kit's workspace. west.yml allow-lists each.
+{name} {path}
+"""
 TODO_MARK = "TODO(port):"
 
 
@@ -66,6 +103,24 @@ class ZephyrBoard:
     arch: str
     ram_kib: int | None
     flash_kib: int | None
+    #: QEMU runs it (its platform file's `simulation`); else a real board, built and not run
+    emulated: bool = True
+
+
+@dataclass(frozen=True)
+class HalModule:
+    """A vendor HAL a real board's SoC needs: a Zephyr module of the pinned
+    Zephyr's manifest, at the revision it pins."""
+
+    name: str  #: e.g. hal_stm32
+    path: str  #: its folder in the workspace, e.g. deps/modules/hal/stm32
+    revision: str
+
+
+#: Real boards: built for every model, not run (no emulator)
+BUILD_ONLY_SUITE = "tests/boards/testcase.yaml"
+#: Where west.yml lands Zephyr's modules (its import's path-prefix)
+MODULES_PREFIX = "deps"
 
 
 def zephyr_version(zephyr: Path) -> str:
@@ -211,9 +266,75 @@ def find_board(target: str, zephyr: Path | None = None) -> ZephyrBoard:
     data: dict[str, Any] = yaml.safe_load(path.read_text())
     ram = _yaml_kib(data, "ram")
     flash = _yaml_kib(data, "flash")
+    simulation = data.get("simulation")
+    names = [s.get("name") if isinstance(s, dict) else s for s in
+             (simulation if isinstance(simulation, list) else [simulation])]
     return ZephyrBoard(identifier, path, str(data.get("arch", "?")),
                        ram if ram is not None else dts_size_kib(path, "zephyr,sram"),
-                       flash if flash is not None else dts_size_kib(path, "zephyr,flash"))
+                       flash if flash is not None else dts_size_kib(path, "zephyr,flash"),
+                       emulated="qemu" in names)
+
+
+def link_uarts(platform_file: Path) -> list[str]:
+    """The UARTs the board's own devicetree enables, the console's left out:
+    the labels a real board's ground link can take (usart6, uart1)."""
+    texts = _dts_texts(platform_file)
+    console = next((m.group(1) for t in texts for m in [re.search(r"zephyr,console\s*=\s*&(\w+)", t)] if m), None)
+    found: list[str] = []
+    for text in texts:
+        for match in re.finditer(r"^&((?:lp)?u(?:s)?art\d+)\s*\{", text, re.MULTILINE):
+            body = _own_properties(_braced(text, match.end() - 1))
+            if re.search(r'status\s*=\s*"okay"', body) and match.group(1) != console and match.group(1) not in found:
+                found.append(match.group(1))
+    return found
+
+
+def soc_folder(board: ZephyrBoard, zephyr: Path) -> Path | None:
+    """The folder of Zephyr's soc/ tree whose soc.yml lists the board's SoC
+    (its board.yml names it): soc/<vendor>/ or soc/<vendor>/<family>/."""
+    board_yml = board.platform_file.parent / "board.yml"
+    if not board_yml.is_file():
+        return None
+    socs = (yaml.safe_load(board_yml.read_text()) or {}).get("board", {}).get("socs", [])
+    names = {s.get("name") for s in socs if isinstance(s, dict)}
+    return next((p.parent for p in sorted((zephyr / "soc").glob("**/soc.yml"))
+                 if names & set(re.findall(r"name:\s*(\S+)", p.read_text()))), None)
+
+
+def hal_module(board: ZephyrBoard, zephyr: Path) -> tuple[HalModule | None, list[str]]:
+    """The vendor HAL a board's SoC uses, found the way Zephyr lays itself
+    out: the SoC's folder is soc/<vendor>/[<family>/], and its HAL is the
+    manifest's hal_<family> (hal_stm32) or else hal_<vendor> (hal_nxp).
+    Returns it, or None and the manifest's HAL modules when neither name is
+    there (an SoC that needs CMSIS alone, or a HAL named otherwise)."""
+    manifest_file = zephyr / "west.yml"
+    manifest = yaml.safe_load(manifest_file.read_text())["manifest"]["projects"] if manifest_file.is_file() else []
+    projects = {p["name"]: p for p in manifest if isinstance(p, dict) and "name" in p}
+    hals = sorted(n for n in projects if n.startswith("hal_"))
+    folder = soc_folder(board, zephyr)
+    if folder is None:
+        return None, hals
+    parts = folder.relative_to(zephyr / "soc").parts
+    for name in [f"hal_{part}" for part in reversed(parts[:2])]:
+        if name in projects:
+            project = projects[name]
+            return HalModule(name, f"{MODULES_PREFIX}/{project.get('path', name)}", str(project["revision"])), hals
+    return None, hals
+
+
+def allow_module(west_yml: str, module: str) -> str:
+    """west.yml with `module` in the zephyr import's name-allowlist (once),
+    its comments and layout kept."""
+    # The list's items: the lines at the first item's indentation
+    match = re.search(r"^[ \t]*name-allowlist:[ \t]*\r?\n"
+                      r"(?P<items>(?P<item_indent>[ \t]+)-[^\n]*\n(?:(?P=item_indent)-[^\n]*\n)*)",
+                      west_yml, re.MULTILINE)
+    if match is None:
+        raise KitError("west.yml has no name-allowlist under the zephyr project: add the module by hand")
+    items = match.group("items")
+    if module in [_item_name(re.sub(r"^\s*-", "", line)) for line in items.splitlines()]:
+        return west_yml
+    return west_yml[:match.end("items")] + f"{match.group('item_indent')}- {module}\n" + west_yml[match.end("items"):]
 
 
 def check_arch(board: ZephyrBoard) -> None:
@@ -280,10 +401,11 @@ def _without_todo(name: str, text: str) -> str:
     return "".join(lines[kept:])
 
 
-def with_todo(name: str, text: str, reference: str, identifier: str) -> str:
+def with_todo(name: str, text: str, reference: str, identifier: str,
+              todos: dict[str, tuple[str, ...]] | None = None) -> str:
     """A copied file with its TODO header, in the file's comment syntax."""
     todo = (f"copied from boards/{reference}/ for {identifier}: check what follows, then delete this header.",
-            *TODOS.get(name, DEFAULT_TODO))
+            *(todos or TODOS).get(name, TODOS.get(name, DEFAULT_TODO)))
     body = _without_todo(name, text)
     if name.endswith(".overlay"):
         return "/*\n" + "".join(f" * {TODO_MARK} {line}\n" for line in todo) + " */\n" + body
@@ -385,19 +507,22 @@ def _reference_folder(reference: str, folder: Path, boards: Path) -> Path:
     return reference_dir
 
 
-def _copy_folder(reference_dir: Path, folder: Path, identifier: str, root: Path, say: Callable[[str], None]) -> None:
+def _copy_folder(reference_dir: Path, folder: Path, identifier: str, root: Path, say: Callable[[str], None],
+                 todos: dict[str, tuple[str, ...]] | None = None) -> None:
     folder.mkdir(parents=True, exist_ok=True)
     copied = set()
     for source in sorted(p for p in reference_dir.iterdir() if p.is_file()):
-        (folder / source.name).write_text(with_todo(source.name, source.read_text(), reference_dir.name, identifier))
+        (folder / source.name).write_text(with_todo(source.name, source.read_text(), reference_dir.name, identifier,
+                                                    todos))
         copied.add(source.name)
         say(f"created: {(folder / source.name).relative_to(root)} (from {reference_dir.name}, TODO header)")
     for other in sorted(p.name for p in folder.iterdir() if p.name not in copied):
         say(f"kept: {(folder / other).relative_to(root)} (not in the reference)")
 
 
-def _join_suite(root: Path, identifier: str, say: Callable[[str], None]) -> None:
-    for path in twister_files(root):
+def _join_suite(root: Path, identifier: str, say: Callable[[str], None], real: bool = False) -> None:
+    # A real board joins the boards built and not run; a QEMU board every suite
+    for path in [root / BUILD_ONLY_SUITE] if real else twister_files(root):
         before = path.read_text()
         after = add_to_twister_lists(before, identifier)
         name = path.relative_to(root)
@@ -427,10 +552,49 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
         say(f"memory: {line}")
     say(f"memory: an estimate from {reference_dir.name}'s build ({shown_as}); ROM can differ a few % on "
         "another board, so the real check is this port's own run")
-    _copy_folder(reference_dir, folder, board.identifier, root, say)
-    _join_suite(root, board.identifier, say)
+    _copy_folder(reference_dir, folder, board.identifier, root, say, None if board.emulated else REAL_TODOS)
+    if board.emulated:
+        _join_suite(root, board.identifier, say)
+        say("next: resolve the TODO(port) headers in "
+            f"boards/{folder.name}/, then follow the checklist in docs/porting.md:")
+        say(f"  scripts/kit compare --board {board.identifier}")
+        say(f"  scripts/kit test --board {board.identifier} --update-baseline   (review and commit the baseline)")
+        return folder
+    say(f"{board.identifier} is a real board (no emulator in {board.platform_file.name}): built for every model, "
+        "not run")
+    (folder / "kit.conf").write_text(with_todo("kit.conf", REAL_KIT_CONF.format(identifier=board.identifier),
+                                               reference_dir.name, board.identifier, REAL_TODOS))
+    say(f"created: {(folder / 'kit.conf').relative_to(root)} (a real board's: no QEMU icount)")
+    uarts = link_uarts(board.platform_file)
+    if uarts:
+        (folder / "app.overlay").write_text(with_todo("app.overlay", REAL_OVERLAY.format(uart=uarts[0]),
+                                                      reference_dir.name, board.identifier, REAL_TODOS))
+        say(f"created: {(folder / 'app.overlay').relative_to(root)} (ground link on {uarts[0]}, the first UART "
+            f"the board enables besides its console; the others: {', '.join(uarts[1:]) or 'none'})")
+    else:
+        say(f"app.overlay: the board enables no UART besides its console; enable one for the ground link "
+            f"(kit,link-uart) in boards/{folder.name}/app.overlay")
+    hal, hals = hal_module(board, zephyr)
+    fetch = ""
+    if hal is None:
+        say(f"hal: no hal_<family> or hal_<vendor> module for its SoC in {zephyr_version(zephyr)}'s manifest; "
+            "CMSIS alone may do. If the build stops in devicetree (an include not found), add its module to "
+            f"west.yml's name-allowlist and to boards/{folder.name}/hal, from: {', '.join(hals)}")
+    else:
+        (folder / "hal").write_text(HAL_FILE.format(name=hal.name, path=hal.path))
+        say(f"created: {(folder / 'hal').relative_to(root)} ({hal.name} {hal.path})")
+        west_yml = root / "west.yml"
+        before = west_yml.read_text()
+        after = allow_module(before, hal.name)
+        if after != before:
+            west_yml.write_text(after)
+            fetch = "  scripts/setup.sh   (fetches it)"
+        say(f"west.yml: {hal.name} {'allow-listed' if fetch else 'was allow-listed'} "
+            f"({zephyr_version(zephyr)} pins {hal.revision[:12]})")
+    _join_suite(root, board.identifier, say, real=True)
     say("next: resolve the TODO(port) headers in "
-        f"boards/{folder.name}/, then follow the checklist in docs/porting.md:")
-    say(f"  scripts/kit compare --board {board.identifier}")
-    say(f"  scripts/kit test --board {board.identifier} --update-baseline   (review and commit the baseline)")
+        f"boards/{folder.name}/ (docs/porting.md, 'A real board'), then:")
+    if fetch:
+        say(fetch)
+    say(f"  scripts/kit test --board {board.identifier}   (builds every model; nothing runs)")
     return folder

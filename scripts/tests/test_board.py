@@ -54,12 +54,14 @@ def _platform(zephyr: Path, folder: str, stem: str, text: str) -> Path:
 def _zephyr(tmp_path: Path, version: bool = True) -> Path:
     zephyr = tmp_path / "zephyr"
     _platform(zephyr, "qemu/cortex_m3", "qemu_cortex_m3",
-              "identifier: qemu_cortex_m3\narch: arm\nram: 64\nflash: 256\n")
+              "identifier: qemu_cortex_m3\narch: arm\nram: 64\nflash: 256\nsimulation: qemu\n")
     _platform(zephyr, "qemu/cortex_m0", "qemu_cortex_m0",
-              "identifier: qemu_cortex_m0\narch: arm\nram: 16\nflash: 256\n")
+              "identifier: qemu_cortex_m0\narch: arm\nram: 16\nflash: 256\n"
+              "simulation: qemu\n")
     _platform(zephyr, "qemu/x86", "qemu_x86", "identifier: qemu_x86\narch: x86\nram: 1024\nflash: 1024\n")
     (zephyr / "boards" / "qemu" / "x86" / "board.yml").write_text("board:\n  name: qemu_x86\n")
-    mps2 = _platform(zephyr, "arm/mps2", "mps2_an385", "identifier: mps2/an385\narch: arm\n").parent
+    mps2 = _platform(zephyr, "arm/mps2", "mps2_an385",
+                     "identifier: mps2/an385\narch: arm\nsimulation:\n  - name: qemu\n").parent
     (mps2 / "mps2_an385.dts").write_text(
         '#include <arm/armv7-m.dtsi>\n#include "mps2_mem.dtsi"\n/ {\n chosen {\n  zephyr,sram = &sram0;\n'
         "  zephyr,flash = &flash0;\n };\n};\n")
@@ -68,8 +70,10 @@ def _zephyr(tmp_path: Path, version: bool = True) -> Path:
         " flash0: flash@0 {\n  partitions {\n   slot0: partition@0 {\n    reg = <0x0 0x8000>;\n   };\n  };\n"
         "  reg = <0 0x200000>;\n };\n};\n")
     _platform(zephyr, "arm/mps2", "mps2_an521_cpu0", "identifier: mps2/an521/cpu0\narch: arm\nram: 4096\n"
+              "simulation: qemu\n"
               "flash: 4096\n")
     _platform(zephyr, "arm/mps2", "mps2_an521_cpu1", "identifier: mps2/an521/cpu1\narch: arm\nram: 4096\n"
+              "simulation: qemu\n"
               "flash: 4096\n")
     _platform(zephyr, "nxp/frdm_k64f", "frdm_k64f", "identifier: frdm_k64f/mk64f12\narch: arm\nram: 192\n"
               "flash: 1024\n")
@@ -248,7 +252,7 @@ def test_scaffolding_from_an_unresolved_port_does_not_stack_headers(tmp_path):
     zephyr = _zephyr(tmp_path)
     board.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     (root / "tests" / "baselines" / "mps2_an385.json").write_text(json.dumps(_results(FOOTPRINT)))
-    _platform(zephyr, "big", "big_board", "identifier: big_board\narch: arm\nram: 512\nflash: 2048\n")
+    _platform(zephyr, "big", "big_board", "identifier: big_board\narch: arm\nram: 512\nflash: 2048\nsimulation: qemu\n")
     folder = board.new_board("big_board", "mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     for name in ("kit.conf", "app.overlay"):
         text = (folder / name).read_text()
@@ -345,3 +349,68 @@ def test_the_pinned_zephyr_knows_both_ported_boards():
     assert (m3.identifier, m3.arch, m3.ram_kib, m3.flash_kib) == ("qemu_cortex_m3", "arm", 64, 256)
     an385 = board.find_board("mps2/an385")
     assert (an385.arch, an385.ram_kib, an385.flash_kib) == ("arm", 4096, 4096)  # from its devicetree
+
+
+# --- A real board: its HAL, its UARTs, built and not run ----------------------
+
+WEST_YML = """manifest:
+  projects:
+    - name: zephyr
+      import:
+        path-prefix: deps
+        name-allowlist:
+          - cmsis   # every Cortex-M
+    - name: fprime
+"""
+
+
+def _real_board(tmp_path: Path) -> tuple[Path, Path]:
+    zephyr = _zephyr(tmp_path)
+    folder = _platform(zephyr, "st/nucleo_f401re", "nucleo_f401re",
+                       "identifier: nucleo_f401re\narch: arm\nram: 96\nflash: 512\n").parent
+    (folder / "board.yml").write_text("board:\n  name: nucleo_f401re\n  vendor: st\n  socs:\n"
+                                      "    - name: stm32f401xe\n")
+    (folder / "nucleo_f401re.dts").write_text(
+        "/ {\n chosen {\n  zephyr,console = &usart2;\n };\n};\n"
+        '&usart1 {\n current-speed = <115200>;\n status = "okay";\n};\n'
+        '&usart2 {\n status = "okay";\n};\n&usart6 {\n status = "disabled";\n};\n')
+    soc = zephyr / "soc" / "st" / "stm32"
+    soc.mkdir(parents=True)
+    (soc / "soc.yml").write_text("family:\n  - name: stm32\n    series:\n      - name: stm32f4x\n"
+                                 "        socs:\n          - name: stm32f401xe\n")
+    (zephyr / "west.yml").write_text("manifest:\n  projects:\n    - name: cmsis\n      revision: abc\n"
+                                     "      path: modules/hal/cmsis\n    - name: hal_stm32\n"
+                                     "      revision: 019d8255333f96bdd47d26b44049bd3e7af8ef55\n"
+                                     "      path: modules/hal/stm32\n    - name: hal_nordic\n      revision: x\n")
+    root = _kit(tmp_path)
+    (root / "west.yml").write_text(WEST_YML)
+    (root / "tests" / "boards").mkdir()
+    (root / "tests" / "boards" / "testcase.yaml").write_text("common:\n  platform_allow:\n    - nucleo_other\n"
+                                                            "  build_only: true\n")
+    return root, zephyr
+
+
+def test_a_real_board_gets_its_hal_its_link_uart_and_joins_the_builds_only(tmp_path):
+    root, zephyr = _real_board(tmp_path)
+    said: list[str] = []
+    folder = board.new_board("nucleo_f401re", root=root, zephyr=zephyr, say=said.append)
+    assert (folder / "hal").read_text().splitlines()[-1] == "hal_stm32 deps/modules/hal/stm32"
+    west = (root / "west.yml").read_text()
+    assert "          - cmsis   # every Cortex-M\n          - hal_stm32\n    - name: fprime" in west
+    assert "CONFIG_QEMU_ICOUNT" not in (folder / "kit.conf").read_text()
+    assert "kit,link-uart = &usart1;" in (folder / "app.overlay").read_text()  # not the console, not disabled
+    assert "nucleo_f401re" in (root / "tests" / "boards" / "testcase.yaml").read_text()
+    assert "nucleo_f401re" not in (root / "tests" / "deployment" / "testcase.yaml").read_text()
+    assert "nucleo_f401re" not in (root / "app" / "sample.yaml").read_text()
+    assert any("scripts/setup.sh" in line for line in said)
+    # Once allow-listed, the manifest is left as it is
+    assert board.allow_module(west, "hal_stm32") == west
+
+
+def test_a_real_boards_hal_is_named_from_the_socs_folder(tmp_path):
+    _, zephyr = _real_board(tmp_path)
+    found, hals = board.hal_module(board.find_board("nucleo_f401re", zephyr), zephyr)
+    assert found == board.HalModule("hal_stm32", "deps/modules/hal/stm32", "019d8255333f96bdd47d26b44049bd3e7af8ef55")
+    assert hals == ["hal_nordic", "hal_stm32"]
+    assert board.find_board("nucleo_f401re", zephyr).emulated is False
+    assert board.find_board("mps2/an385", zephyr).emulated is True
