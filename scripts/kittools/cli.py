@@ -57,11 +57,16 @@ def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
     return files, tally.failed == 0
 
 
+def is_real_board(board: str) -> bool:
+    """A board the kit builds and does not run (tests/boards), however the
+    board target is spelled (nucleo_f401re, nucleo_f401re/stm32f401xe)."""
+    return check_board(board) in {check_board(real) for real in testing.suite_boards(testing.BUILD_ONLY_SUITE)}
+
+
 def check_runs_here(board: str) -> None:
     """Refuse a real board where the command must run the deployment: the
     kit builds it (tests/boards) and runs nothing on it yet."""
-    folder = check_board(board)
-    if folder in {check_board(real) for real in testing.suite_boards(testing.BUILD_ONLY_SUITE)}:
+    if is_real_board(board):
         raise KitError(f"{board} is a real board: the kit builds it (kit test, tests/boards) but cannot run it "
                        f"here (no emulator; device testing is not done yet). Boards it runs on: "
                        f"{', '.join(testing.suite_boards())}")
@@ -107,11 +112,9 @@ def cmd_report(args: argparse.Namespace) -> int:
 def cmd_test(args: argparse.Namespace) -> int:
     # The real boards are built and not run (tests/boards): no budget, no
     # ground link, nothing to play
-    real = testing.suite_boards(testing.BUILD_ONLY_SUITE)
-    boards = [b for b in args.board if b not in real] if args.board else testing.suite_boards()
-    built_only = [b for b in args.board if b in real] if args.board else real
-    for board in boards + built_only:
-        check_board(board)
+    boards = [b for b in args.board if not is_real_board(b)] if args.board else testing.suite_boards()
+    built_only = ([b for b in args.board if is_real_board(b)] if args.board
+                  else testing.suite_boards(testing.BUILD_ONLY_SUITE))
     check_provisioned()
     log_dir = Path(args.output).resolve()
     # Two lanes. The QEMU lane: twister, then what reads its builds. The host

@@ -28,6 +28,11 @@ def test_a_real_board_is_refused_where_the_deployment_must_run(command, tmp_path
     assert not (tmp_path / "out").exists()
 
 
+def test_a_real_board_is_known_however_its_target_is_spelled():
+    assert cli.is_real_board("nucleo_f401re") and cli.is_real_board("nucleo_f401re/stm32f401xe")
+    assert not cli.is_real_board("qemu_cortex_m3") and not cli.is_real_board("mps2/an385")
+
+
 def test_unprovisioned_workspace_is_one_clear_error(tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(workspace, "DEPS", tmp_path / "deps")
     assert cli.main(["compare", "--board", "qemu_cortex_m3", "--output", str(tmp_path / "out")]) == 2
