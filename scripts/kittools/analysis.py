@@ -17,14 +17,20 @@ KNEE_FACTOR = 1.1
 
 def conditions_text(data: Results) -> Text:
     c = data.conditions
-    lines = [f"Board {c.get('board')}; kit {c.get('kit')}; Zephyr {c.get('zephyr')}; F´ {c.get('fprime')}.",
-             f"Rate-group tick {c.get('tick_hz')} Hz, system clock {c.get('sys_tick_hz')} Hz, cycle counter "
-             f"{c.get('cycles_hz')} Hz, QEMU icount shift {c.get('icount_shift')}, run of {c.get('run_ticks')} ticks."]
+    built_only = c.get("run")  # a board only built (results.built_only): no times, so no caveat on them
+    if built_only:
+        lines = [f"Board {c.get('board')}: {built_only}."]
+    else:
+        lines = [f"Board {c.get('board')}; kit {c.get('kit')}; Zephyr {c.get('zephyr')}; F´ {c.get('fprime')}.",
+                 f"Rate-group tick {c.get('tick_hz')} Hz, system clock {c.get('sys_tick_hz')} Hz, cycle counter "
+                 f"{c.get('cycles_hz')} Hz, QEMU icount shift {c.get('icount_shift')}, run of "
+                 f"{c.get('run_ticks')} ticks."]
     for name in data.names():
         build = data.variants[name].build
         if build.get("toolchain"):
             lines.append(f"{name}: {build['toolchain']}.")
-    lines.append(CAVEAT)
+    if not built_only:
+        lines.append(CAVEAT)
     return Text("Conditions", lines)
 
 
@@ -75,8 +81,11 @@ def findings(data: Results) -> Text:
             idle = [r for r in data.variants[v].of_kind("CPU") if r.get("name") == "idle"]
             if idle:
                 lines.append(f"{v} idles {int(idle[0]['cpu_permille']) / 10:.1f}% of the run.")
-    verdicts = ", ".join(f"{v} {'PASS' if data.variants[v].passed else 'FAIL'}" for v in names)
-    lines.append(f"Run verdicts: {verdicts}.")
+    if data.conditions.get("run"):  # a board only built: no run, no verdict
+        lines.append(f"{data.board}: {data.conditions['run']}.")
+    else:
+        verdicts = ", ".join(f"{v} {'PASS' if data.variants[v].passed else 'FAIL'}" for v in names)
+        lines.append(f"Run verdicts: {verdicts}.")
     return Text("What the numbers say", lines)
 
 

@@ -152,6 +152,14 @@ def cmd_test(args: argparse.Namespace) -> int:
                               ground))
         for board in boards:
             qemu_lane.append((f"budget: {board} results against its baseline", functools.partial(budget, board)))
+
+        def built_report(board: str) -> testing.Tally:
+            if boards:  # their size reports are made beside the determinism runs
+                size_reports.result()
+            return testing.report_built_only(board, log_dir)
+
+        for board in built_only:
+            qemu_lane.append((f"report: {board}, built only", functools.partial(built_report, board)))
     if not args.skip_host:
         host_lane.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:

@@ -123,6 +123,29 @@ def suite_builds(twister_out: Path, board: str | None = None, prefix: str = "kit
     return sorted(found, key=lambda pair: (pair[0], pair[1].name))
 
 
+#: The real boards' builds (tests/boards: built, not run)
+BUILD_ONLY_PREFIX = "board."
+#: The conditions of a board only built: what a reader must know before any figure
+NOT_RUN = "built only: not run on hardware (no emulator); ROM and RAM are the build's, there is no timing"
+
+
+def built_only(twister_out: Path, board: str) -> model.Results:
+    """Results of a real board's builds (tests/boards, one per execution
+    model): footprint and ROM/RAM by layer, no records (nothing ran)."""
+    builds = suite_builds(twister_out, board, BUILD_ONLY_PREFIX)
+    if not builds:
+        raise KitError(f"twister built nothing of tests/boards on {board} in {twister_out}")
+    reports = modules.reports([build for _, build in builds])
+    variants: dict[str, model.Variant] = {}
+    for (_, build), (rom, ram) in zip(builds, reports, strict=True):
+        size = measure(build)
+        variants[build.name.removeprefix(BUILD_ONLY_PREFIX)] = model.Variant(
+            passed=False, metrics={model.ROM: size.rom, model.RAM: size.ram}, build=conditions.read(build),
+            modules={"rom": modules.breakdown(rom), "ram": modules.breakdown(ram)},
+            footprint={"rom": size.rom, "ram": size.ram, "rom_size": size.rom_size, "ram_size": size.ram_size})
+    return model.Results({"board": builds[0][0], "run": NOT_RUN}, variants)
+
+
 def integration_logs(log_dir: Path, platform: str, build_name: str) -> Path:
     """Where `kit test` keeps what it ran on a twister build of the ground
     scenario (integration suite, fuzzing, serial-load sweep)."""

@@ -41,7 +41,7 @@ HOST_BUILD = KIT_ROOT / "build" / "host-ut"
 SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
 #: Real boards, built and not run (no emulator): every model's build
 BUILD_ONLY_SUITE = KIT_ROOT / "tests" / "boards" / "testcase.yaml"
-BUILD_ONLY_PREFIX = "board."
+BUILD_ONLY_PREFIX = results.BUILD_ONLY_PREFIX
 TWISTER_OUT = KIT_ROOT / "twister-out"
 
 
@@ -459,7 +459,8 @@ def make_size_reports(twister_out: Path = TWISTER_OUT) -> None:
     themselves, as they were measured. A failure is left to the budget step,
     which makes the report again and says why."""
     try:
-        modules.reports([build for _, build in results.suite_builds(twister_out)])
+        modules.reports([build for _, build in results.suite_builds(twister_out)
+                         + results.suite_builds(twister_out, prefix=BUILD_ONLY_PREFIX)])
     except KitError:
         pass  # made again, and reported, by the budget step
 
@@ -510,6 +511,21 @@ def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseli
     report.write(data, out_dir / "report", baseline, limits)
     print(f"[kit]   {board}: report against {baseline_path.name}: {out_dir / 'report' / 'report.html'}", flush=True)
     return tally
+
+
+def report_built_only(board: str, log_dir: Path) -> Tally:
+    """A real board's results (its builds only: ROM and RAM, by layer) and
+    their report, in <log_dir>/<board folder>/ like a QEMU board's; no
+    baseline, no budget (nothing ran). One count: the results were made."""
+    data = results.built_only(TWISTER_OUT, board)
+    out_dir = log_dir / check_board(board)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "results.json").write_text(json.dumps(data.to_json(), indent=2) + "\n")
+    from . import report  # for the reader; kept out of the budget gate's imports
+
+    report.write(data, out_dir / "report")
+    print(f"[kit]   {board}: built only, ROM and RAM by layer: {out_dir / 'report' / 'report.html'}", flush=True)
+    return Tally(passed=1)
 
 
 def write_baseline(data: Results, path: Path) -> None:

@@ -94,3 +94,21 @@ def test_small_p99_changes_are_not_regressions(tmp_path):
     noisy = copy.deepcopy(baseline)
     noisy.variants["rtos"].metrics[model.rg_metric("rg1kHz", "jitter", "p99")] += 1.5  # +150% but under 2 us
     assert report.write(noisy, tmp_path, baseline=baseline).violations == []
+
+
+def test_a_board_only_built_is_reported_without_runs_verdicts_or_times(tmp_path):
+    def built(rom: int, ram: int) -> model.Variant:
+        return model.Variant(passed=False, metrics={model.ROM: rom, model.RAM: ram},
+                             modules={"rom": {"F´ framework": rom - 9000, "libc (picolibc, libgcc)": 9000},
+                                      "ram": {"F´ framework": ram - 200, "libc (picolibc, libgcc)": 200}},
+                             footprint={"rom": rom, "ram": ram, "rom_size": 524288, "ram_size": 98304})
+    data = model.Results({"board": "nucleo_f401re/stm32f401xe", "run": results.NOT_RUN},
+                         {"baremetal": built(157054, 46428), "rtos": built(162204, 64092)})
+    report.write(data, tmp_path)
+    markdown = (tmp_path / "report.md").read_text()
+    assert f"Board nucleo_f401re/stm32f401xe: {results.NOT_RUN}." in markdown
+    assert "Run verdicts" not in markdown and "virtual time" not in markdown
+    assert "| F´ framework | 148,054 | 153,204 | 46,228 | 63,892 |" in markdown
+    # Beside the emulated boards: its ROM and RAM, no timing
+    report.write_boards([_results(), data], tmp_path / "boards")
+    assert "nucleo_f401re/stm32f401xe rtos" in (tmp_path / "boards" / "report.md").read_text()
