@@ -33,6 +33,7 @@ from . import (
     sweep,
     symbols,
 )
+from .board import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
 from .board import REFERENCE_BOARD
 from .model import Results
 from .workspace import KIT_ROOT, KitError, check_board, environment
@@ -40,8 +41,7 @@ from .workspace import KIT_ROOT, KitError, check_board, environment
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
 SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
 #: Real boards, built and not run (no emulator): every model's build
-BUILD_ONLY_SUITE = KIT_ROOT / "tests" / "boards" / "testcase.yaml"
-BUILD_ONLY_PREFIX = results.BUILD_ONLY_PREFIX
+BUILD_ONLY_SUITE = KIT_ROOT / BOARDS_SUITE_FILE
 TWISTER_OUT = KIT_ROOT / "twister-out"
 
 
@@ -86,7 +86,7 @@ def twister_tally(path: Path) -> Tally:
 
 
 def _built_only(suite: dict[str, Any]) -> bool:
-    return str(suite.get("name", "")).rsplit("/", 1)[-1].startswith(BUILD_ONLY_PREFIX)
+    return str(suite.get("name", "")).rsplit("/", 1)[-1].startswith(results.BUILD_ONLY_PREFIX)
 
 
 def suite_boards(suite: Path = SUITE) -> list[str]:
@@ -238,7 +238,7 @@ def say_built_only(out_dir: Path = TWISTER_OUT) -> None:
     """A line per real board's build (tests/boards): its ROM and RAM, as
     built; nothing ran on it."""
     try:
-        builds = results.suite_builds(out_dir, prefix=BUILD_ONLY_PREFIX)
+        builds = results.suite_builds(out_dir, prefix=results.BUILD_ONLY_PREFIX)
     except KitError:
         return  # a build that failed: twister's tally counts it
     for platform, build in builds:
@@ -460,7 +460,7 @@ def make_size_reports(twister_out: Path = TWISTER_OUT) -> None:
     which makes the report again and says why."""
     try:
         modules.reports([build for _, build in results.suite_builds(twister_out)
-                         + results.suite_builds(twister_out, prefix=BUILD_ONLY_PREFIX)])
+                         + results.suite_builds(twister_out, prefix=results.BUILD_ONLY_PREFIX)])
     except KitError:
         pass  # made again, and reported, by the budget step
 
