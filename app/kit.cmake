@@ -69,7 +69,8 @@ if(NOT DEFINED CMAKE_TOOLCHAIN_FILE)
 endif()
 set(FPRIME_ENABLE_TEXT_LOGGERS OFF CACHE BOOL "no text logging on a 64 KiB target")
 list(APPEND ZEPHYR_EXTRA_MODULES
-    "${KIT_ROOT}/modules/fprime" "${KIT_ROOT}/modules/fprime-zephyr" "${KIT_ROOT}/modules/fprime-baremetal")
+    "${KIT_ROOT}/modules/fprime" "${KIT_ROOT}/modules/fprime-zephyr" "${KIT_ROOT}/modules/fprime-baremetal"
+    "${KIT_ROOT}/modules/qemu")
 include("${KIT_ROOT}/modules/fprime/fprime.cmake")
 
 # F´'s sub-build (it re-configures the application only to compute FPP

@@ -24,7 +24,21 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import ablation, budget, console, ground, report, results, serial_sweep, sizing, style, sweep, symbols, testing
+from . import (
+    ablation,
+    budget,
+    console,
+    device,
+    ground,
+    report,
+    results,
+    serial_sweep,
+    sizing,
+    style,
+    sweep,
+    symbols,
+    testing,
+)
 from .board import REFERENCE_BOARD, new_board
 from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant, one_at_a_time
 
@@ -68,8 +82,8 @@ def check_runs_here(board: str) -> None:
     kit builds it (tests/boards) and runs nothing on it yet."""
     if is_real_board(board):
         raise KitError(f"{board} is a real board: the kit builds it (kit test, tests/boards) but cannot run it "
-                       f"here (no emulator; device testing is not done yet). Boards it runs on: "
-                       f"{', '.join(testing.suite_boards())}")
+                       f"here (no emulator; on the board itself: kit test --device-testing --hardware-map FILE). "
+                       f"Boards it runs on: {', '.join(testing.suite_boards())}")
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
@@ -110,6 +124,8 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 
 def cmd_test(args: argparse.Namespace) -> int:
+    if args.device_testing or args.hardware_map:
+        return _device_test(args)
     # The real boards are built and not run (tests/boards): no budget, no
     # ground link, nothing to play
     boards = [b for b in args.board if not is_real_board(b)] if args.board else testing.suite_boards()
@@ -160,21 +176,66 @@ def cmd_test(args: argparse.Namespace) -> int:
 
         for board in built_only:
             qemu_lane.append((f"report: {board}, built only", functools.partial(built_report, board)))
+    _host_steps(args, log_dir, host_lane)
+    # The device path (twister's device testing, QEMU standing in for a
+    # flashed board): its own build and QEMU runs, in the lane beside twister
+    if not args.skip_twister and testing.STAND_IN_BOARD in boards:
+        host_lane.append((f"device testing: twister's device harness, QEMU standing in for a flashed "
+                          f"{testing.STAND_IN_BOARD} ({testing.STAND_IN_MODEL})",
+                          lambda: testing.run_qemu_device(log_dir)))
+    return _run_lanes(qemu_lane, host_lane, host_lane_done)
+
+
+def _host_steps(args: argparse.Namespace, log_dir: Path, lane: list[tuple[str, Callable[[], testing.Tally]]]) -> None:
+    """The steps that need no board: host unit tests and the tooling's checks."""
     if not args.skip_host:
-        host_lane.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
+        lane.append(("host unit tests (googletest)", lambda: testing.run_host_tests(log_dir)))
     if not args.skip_python:
-        host_lane.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
-        host_lane.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
-        host_lane.append(("C++ style (clang-format, F´ style)", style.run_style_check))
+        lane.append(("tooling tests (pytest)", lambda: testing.run_pytest(log_dir)))
+        lane.append(("tooling lint and types (ruff, mypy)", lambda: testing.run_lint(log_dir)))
+        lane.append(("C++ style (clang-format, F´ style)", style.run_style_check))
+
+
+def _run_lanes(qemu_lane: list[tuple[str, Callable[[], testing.Tally]]],
+               host_lane: list[tuple[str, Callable[[], testing.Tally]]],
+               host_lane_done: threading.Event | None = None) -> int:
+    """Both lanes at once, the closing count, the exit status."""
+    done = host_lane_done or threading.Event()
     started = time.monotonic()
     with one_at_a_time("test"), concurrent.futures.ThreadPoolExecutor(max_workers=1) as beside:
         host = beside.submit(_run_steps, host_lane)
-        host.add_done_callback(lambda _: host_lane_done.set())
+        host.add_done_callback(lambda _: done.set())
         total = _run_steps(qemu_lane)
         total.add(host.result())
     _say(f"all steps: {time.monotonic() - started:.0f} s")
     print(f"total: {total.passed} passed, {total.failed} failed")
     return 0 if total.failed == 0 and total.passed > 0 else 1
+
+
+def _device_test(args: argparse.Namespace) -> int:
+    """kit test --device-testing --hardware-map FILE: the suite on the map's
+    boards through twister's device testing, instead of under QEMU."""
+    if not (args.device_testing and args.hardware_map):
+        raise KitError("device testing needs both --device-testing and --hardware-map FILE (twister's hardware "
+                       "map: each board's platform, runner and serial port; docs/porting.md, 'Device testing')")
+    if args.board or args.update_baseline:
+        raise KitError("--board and --update-baseline are for the QEMU run; with --device-testing the hardware "
+                       "map names the boards")
+    check_provisioned()
+    log_dir = Path(args.output).resolve()
+    hardware_map = Path(args.hardware_map)
+    devices = device.read_map(hardware_map)
+    for connected in devices:
+        check_board(connected.platform)
+    boards = ", ".join(dict.fromkeys(connected.platform for connected in devices))
+    models = tuple(args.model or ())
+    qemu_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
+    if not args.skip_twister:
+        qemu_lane.append((f"device testing: {', '.join(models) or 'every model'} on {boards} ({hardware_map})",
+                          lambda: testing.run_device_testing(hardware_map, log_dir, models)))
+    host_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
+    _host_steps(args, log_dir, host_lane)
+    return _run_lanes(qemu_lane, host_lane)
 
 
 def _settle(future: concurrent.futures.Future[None], job: Callable[[], None]) -> None:
@@ -351,6 +412,13 @@ def parser() -> argparse.ArgumentParser:
     t.add_argument("--skip-python", action="store_true")
     t.add_argument("--update-baseline", action="store_true",
                    help="make this run's results tests/baselines/<board>.json (review and commit the change)")
+    t.add_argument("--device-testing", action="store_true",
+                   help="run the suite on attached boards through twister's device testing instead of under QEMU "
+                        "(with --hardware-map)")
+    t.add_argument("--hardware-map", help="twister's hardware map of the attached boards (west twister "
+                                          "--generate-hardware-map makes one)")
+    t.add_argument("--model", action="append", choices=VARIANTS,
+                   help="with --device-testing: the execution model to play (repeatable; default: every one)")
     t.set_defaults(func=cmd_test)
     g = sub.add_parser("gds", help="boot a board and model under QEMU with fprime-gds on its ground link")
     g.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")

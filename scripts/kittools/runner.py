@@ -102,19 +102,19 @@ class Qemu:
     """The build's `run` target (QEMU) in the background, its console read
     line by line from the build's QEMU pipe (a twister build) or from stdio.
     A build that asks for its scenario at boot is answered `scenario` at its
-    prompt. A context manager: leaving it stops QEMU (its whole process
-    group)."""
+    prompt (None: left to whoever writes to the console, send()). A context
+    manager: leaving it stops QEMU (its whole process group)."""
 
-    def __init__(self, build_dir: Path, scenario: str = "nominal") -> None:
+    def __init__(self, build_dir: Path, scenario: str | None = "nominal") -> None:
         self.build_dir = build_dir
         self.lines: list[str] = []
         self._partial = b""
-        self._answer: str | None = scenario if asks_at_boot(build_dir) else None
+        self._answer: str | None = scenario if scenario is not None and asks_at_boot(build_dir) else None
         pipe = qemu_pipe(build_dir)
         self._pipe_fds = _open_pipe(pipe) if pipe is not None else None
         self._process = subprocess.Popen(
             run_command(build_dir), cwd=KIT_ROOT, env=environment(),
-            stdin=subprocess.PIPE if self._answer is not None and self._pipe_fds is None else subprocess.DEVNULL,
+            stdin=subprocess.PIPE if self._pipe_fds is None else subprocess.DEVNULL,
             stdout=subprocess.DEVNULL if self._pipe_fds else subprocess.PIPE, stderr=subprocess.STDOUT,
             start_new_session=True)
         if self._pipe_fds is not None:
@@ -157,7 +157,7 @@ class Qemu:
                 line = raw.decode(errors="replace").rstrip("\r")
                 self.lines.append(line)
                 if self._answer is not None and line.startswith(SELECT_PROMPT):
-                    self._send(f"{self._answer}\n")
+                    self.send(f"{self._answer}\n".encode())
                     self._answer = None  # once: a refused name shows as a second prompt
                 found = found or done(line)
             if found:
@@ -167,12 +167,24 @@ class Qemu:
     def text(self) -> str:
         return "\n".join(self.lines)
 
-    def _send(self, text: str) -> None:
+    def console_fd(self) -> int:
+        """The file descriptor the console's output is read from."""
+        return self._fd
+
+    def read_raw(self) -> bytes:
+        """The console bytes ready now, unsplit (b"" when there are none or
+        QEMU has closed its console); for a caller that only forwards them."""
+        try:
+            return os.read(self._fd, 65536)
+        except BlockingIOError:
+            return b""
+
+    def send(self, data: bytes) -> None:
         """Bytes to the console: the pipe's input FIFO, or QEMU's stdin."""
         if self._pipe_fds is not None:
-            os.write(self._pipe_fds[1], text.encode())
+            os.write(self._pipe_fds[1], data)
         elif self._process.stdin is not None:
-            self._process.stdin.write(text.encode())
+            self._process.stdin.write(data)
             self._process.stdin.flush()
 
     def stop(self) -> None:

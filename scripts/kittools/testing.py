@@ -21,6 +21,7 @@ from typing import Any
 from . import (
     budget,
     console,
+    device,
     floor,
     footprint,
     fuzz,
@@ -36,7 +37,7 @@ from . import (
 from .board import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
 from .board import REFERENCE_BOARD
 from .model import Results
-from .workspace import KIT_ROOT, KitError, check_board, environment
+from .workspace import KIT_ROOT, KitError, check_board, check_variant, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
 SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
@@ -208,30 +209,80 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
+    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{floor.CONSOLE_LOG}"):  # the kernel floor's records
+        console_log.unlink()
+    command = ["west", "twister", "-T", "tests", "-j", "2", "--overflow-as-errors"]
+    for platform in platforms:
+        command += ["-p", platform]
+    if scenarios:
+        command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
+    tally = _play(command, log_dir / "twister.log", out_dir)
+    say_built_only(out_dir)
+    return tally
+
+
+def _play(command: list[str], log: Path, out_dir: Path) -> Tally:
+    """Run a twister command that plays the suite into `out_dir`, a line
+    per finished configuration and per scenario played; its tally."""
     # -n: build in the last run's folders, so that a second run rebuilds only
     # what changed (twister configures again; ninja and ccache do the rest).
     # The last run's consoles go first: a scenario this run does not play (or
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
         shutil.rmtree(runs)
-    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{floor.CONSOLE_LOG}"):  # the kernel floor's records
-        console_log.unlink()
     # ... and so does the last run's report: a twister that dies before
     # writing its own must not be counted by the last one's
     (out_dir / "twister.json").unlink(missing_ok=True)
-    command = ["west", "twister", "-T", "tests", "-j", "2", "-n", "-v", "--inline-logs",
-               "--outdir", str(out_dir), "--overflow-as-errors"]
-    for platform in platforms:
-        command += ["-p", platform]
-    if scenarios:
-        command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
+    command = [*command, "-n", "-v", "--inline-logs", "--outdir", str(out_dir)]
     with RunWatcher(out_dir):
-        code = _run_streamed(command, log_dir / "twister.log", TwisterProgress().line)
+        code = _run_streamed(command, log, TwisterProgress().line)
     tally = twister_tally(out_dir / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)
-    say_built_only(out_dir)
     return tally
+
+
+# --- Device testing ----------------------------------------------------
+DEVICE_OUT = KIT_ROOT / "build" / "device-out"
+#: CI's device path: a QEMU board standing in for one on a probe (its device
+#: folder and hardware map), one model: the path is under test here, the
+#: models are in the QEMU run
+QEMU_DEVICE = KIT_ROOT / "build" / "qemu-device"
+STAND_IN_BOARD = REFERENCE_BOARD
+STAND_IN_MODEL = "baremetal"
+
+
+def run_device_testing(hardware_map: Path, log_dir: Path, models: tuple[str, ...] = (),
+                       out_dir: Path = DEVICE_OUT) -> Tally:
+    """The deployment suite (tests/deployment, every model or `models`) on
+    each connected board of a twister hardware map, through twister's device
+    testing: each scenario flashes the board with its runner, reads its
+    console (its port or serial_pty) and asserts what the QEMU run asserts
+    (pytest/test_scenarios.py)."""
+    devices = device.read_map(hardware_map)
+    for connected in devices:
+        check_board(connected.platform)
+    for model in models:
+        check_variant(model)
+    # --force-platform: a real board is not in the suite's platform_allow,
+    # which lists where the QEMU run plays
+    command = ["west", "twister", "--device-testing", "--hardware-map", str(hardware_map.resolve()),
+               "-T", str(SUITE.parent), "--force-platform"]
+    for platform in dict.fromkeys(connected.platform for connected in devices):
+        command += ["-p", platform]
+    for model in models:
+        command += ["-s", f"kit.{model}"]
+    return _play(command, log_dir / "twister-device.log", out_dir)
+
+
+def run_qemu_device(log_dir: Path) -> Tally:
+    """The device path without hardware: STAND_IN_BOARD under QEMU as the
+    flashed board of a hardware map (device.stand_in_map), STAND_IN_MODEL's
+    suite played through twister's device testing."""
+    folder = check_board(STAND_IN_BOARD)
+    hardware_map = QEMU_DEVICE / "hardware-map.yaml"
+    device.stand_in_map(hardware_map, STAND_IN_BOARD, QEMU_DEVICE / folder)
+    return run_device_testing(hardware_map, log_dir, (STAND_IN_MODEL,))
 
 
 def say_built_only(out_dir: Path = TWISTER_OUT) -> None:
