@@ -1,7 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
-"""ROM and RAM by module, from Zephyr's `rom_report` / `ram_report` trees.
-
-Zephyr attributes every symbol to its source path (from DWARF); the kit
+"""ROM and RAM by module, from Zephyr's attribution of every symbol to its
+source path (size_report, from DWARF; run by kittools.size_report); the kit
 sorts those paths into the layers a baremetal-vs-RTOS decision is about.
 Symbols without a source path (linker-made tables, vtables, static
 constructors) are placed by their C++ namespace where it tells, otherwise
@@ -19,7 +18,8 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from .workspace import DEPS, KIT_ROOT, KitError, environment
+from . import size_report
+from .workspace import KitError, environment
 
 FRAMEWORK = "F´ framework"
 SERVICES = "F´ services"
@@ -82,21 +82,18 @@ def reports(builds: list[Path], jobs: int = 2) -> list[tuple[dict, dict]]:
 
 
 def _make_reports(build_dir: Path, elf: Path) -> None:
-    """rom.json and ram.json in the build folder: Zephyr's size_report as its
-    rom_report and ram_report targets run it (same depth, same workspace:
-    `west topdir`, the kit's root), but once for both (`all`: one reading of
-    the DWARF) and without ninja, so that it can run while a QEMU of the same
-    build folder does. PYTHONHASHSEED=0: the tool gives a symbol that shares
-    its address with another one name or the other by the order of a Python
-    set, so that two runs on one image moved a few bytes between layers."""
-    size_report = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
-    command = [sys.executable, str(size_report), "-k", str(elf), "-z", str(DEPS / "zephyr"), "-o", str(build_dir),
-               f"--workspace={KIT_ROOT}", "-d", "99", "-q", "all"]
+    """<kind>-symbols.json in the build folder: Zephyr's size_report
+    attribution without its display tree (kittools.size_report), in a
+    process of its own so that two builds take two cores. PYTHONHASHSEED=0:
+    the tool gives a symbol that shares its address with another one name or
+    the other by the order of a Python set, so that two runs on one image
+    moved a few bytes between layers."""
+    command = [sys.executable, "-m", "kittools.size_report", str(elf), str(build_dir)]
     result = subprocess.run(command, cwd=build_dir, env={**environment(), "PYTHONHASHSEED": "0"},
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    missing = [name for name in ("rom.json", "ram.json") if not (build_dir / name).is_file()]
+    missing = [kind for kind in size_report.KINDS if not size_report.output(build_dir, kind).is_file()]
     if result.returncode != 0 or missing:
-        raise KitError(f"Zephyr's size_report failed for {build_dir} ({' '.join(command)}): {result.stderr[-2000:]}")
+        raise KitError(f"the size report failed for {build_dir} ({' '.join(command)}): {result.stderr[-2000:]}")
 
 
 # Leaf identifiers are relative to the report's top-level groups
@@ -142,13 +139,14 @@ def breakdown(report: dict) -> dict[str, int]:
 
 
 def report(build_dir: Path, kind: str) -> dict:
-    """Zephyr's rom or ram report of a build, made if missing or made from
-    another image. "Another image" is decided by content: a configure
-    relinks (Zephyr rewrites its linker snippets every time) into the same
-    bytes, and the reports take most of a minute (DWARF)."""
+    """A build's rom or ram report (every symbol, its source path, its
+    bytes: kittools.size_report), made if missing or made from another
+    image. "Another image" is decided by content: a configure relinks
+    (Zephyr rewrites its linker snippets every time) into the same bytes,
+    and the reports take about 20 s of one core (DWARF)."""
     if kind not in ("rom", "ram"):
         raise ValueError(kind)
-    path = build_dir / f"{kind}.json"
+    path = size_report.output(build_dir, kind)
     made_from = build_dir / "size-reports.elf-sha256"
     elf = build_dir / "zephyr" / "zephyr.elf"
     if not elf.is_file():

@@ -125,6 +125,9 @@ def suite_builds(twister_out: Path, board: str | None = None, prefix: str = "kit
 
 #: The real boards' builds (tests/boards: built, not run)
 BUILD_ONLY_PREFIX = "board."
+#: The suite played again with a footprint profile (profile.<profile>.<model>,
+#: modules/fprime/snippets/fprime-<profile>): not the comparison's builds
+PROFILE_PREFIX = "profile."
 #: The conditions of a board only built: what a reader must know before any figure
 NOT_RUN = "built only: not run on hardware (no emulator); ROM and RAM are the build's, there is no timing"
 

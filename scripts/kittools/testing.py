@@ -218,6 +218,7 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
         command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
     tally = _play(command, log_dir / "twister.log", out_dir)
     say_built_only(out_dir)
+    say_profiles(out_dir)
     return tally
 
 
@@ -296,6 +297,29 @@ def say_built_only(out_dir: Path = TWISTER_OUT) -> None:
         size = footprint.measure(build)
         print(f"[kit]   {platform} {build.name}: built, not run (no emulator; docs/porting.md): "
               f"ROM {size.rom:,} of {size.rom_size:,} B, RAM {size.ram:,} of {size.ram_size:,} B", flush=True)
+
+
+def say_profiles(out_dir: Path = TWISTER_OUT) -> None:
+    """A line per footprint profile's build of the suite (its `profile.`
+    scenarios): ROM and RAM, and their change from the same model's build
+    with the kit's profile on the same board."""
+    try:
+        profiles = results.suite_builds(out_dir, prefix=results.PROFILE_PREFIX)
+        kit_builds = {(platform, build.name): build for platform, build in results.suite_builds(out_dir)}
+    except KitError:
+        return  # a build that failed: twister's tally counts it
+    for platform, build in profiles:
+        profile, model = build.name.removeprefix(results.PROFILE_PREFIX).split(".", 1)
+        size = footprint.measure(build)
+        kit_build = kit_builds.get((platform, f"kit.{model}"))
+        if kit_build is None:
+            print(f"[kit]   {platform} {model} with fprime-{profile}: ROM {size.rom:,} B, RAM {size.ram:,} B",
+                  flush=True)
+            continue
+        kit = footprint.measure(kit_build)
+        print(f"[kit]   {platform} {model} with fprime-{profile}: ROM {size.rom:,} B ({size.rom - kit.rom:+,} from "
+              f"the kit profile's {kit.rom:,}), RAM {size.ram:,} B ({size.ram - kit.ram:+,} from {kit.ram:,})",
+              flush=True)
 
 
 def recorded_hashes(twister_out: Path) -> dict[tuple[str, Path, str], str]:

@@ -60,7 +60,7 @@ def test_the_ground_link_is_its_own_layer():
 def test_a_size_report_is_made_again_only_for_another_image(tmp_path, monkeypatch):
     """Staleness is by the image's content: a relink into the same bytes (a
     configure's) keeps the reports, different bytes remake both, in one run
-    of Zephyr's size_report with a fixed hash seed."""
+    of the size report (both kinds) with a fixed hash seed."""
     import json
     import os
     import subprocess
@@ -71,19 +71,38 @@ def test_a_size_report_is_made_again_only_for_another_image(tmp_path, monkeypatc
     made = []
 
     def size_report(command, **kwargs):
-        made.append((command[-1], kwargs["env"]["PYTHONHASHSEED"]))
+        made.append((command[2], kwargs["env"]["PYTHONHASHSEED"]))
         for kind in ("rom", "ram"):
-            (tmp_path / f"{kind}.json").write_text(json.dumps(_tree()))
+            (tmp_path / f"{kind}-symbols.json").write_text(json.dumps(_tree()))
         return subprocess.CompletedProcess(command, 0, "", "")
 
     monkeypatch.setattr(modules.subprocess, "run", size_report)
     assert modules.report(tmp_path, "rom")["total_size"] == 100
     modules.report(tmp_path, "ram")
-    assert made == [("all", "0")]
+    assert made == [("kittools.size_report", "0")]
     later = elf.stat().st_mtime + 60
     os.utime(elf, (later, later))  # relinked, same bytes
     modules.report(tmp_path, "rom")
-    assert made == [("all", "0")]
+    assert made == [("kittools.size_report", "0")]
     elf.write_bytes(b"image 2")
     modules.report(tmp_path, "ram")
-    assert made == [("all", "0"), ("all", "0")]
+    assert made == [("kittools.size_report", "0")] * 2
+
+
+def test_the_size_report_places_a_path_in_zephyrs_groups():
+    """The groups and identifiers of Zephyr's size_report tree: Zephyr's
+    base before the build folder before the workspace, anything else by
+    its absolute path, a symbol without a source file under "(no paths)"."""
+    from pathlib import Path
+
+    from kittools import size_report
+
+    build = size_report.KIT_ROOT / "twister-out" / "b"
+    groups = size_report._groups(build)
+    assert size_report._place(size_report.DEPS / "zephyr" / "kernel" / "sched.c" / "f", groups) == (
+        "ZEPHYR_BASE", "kernel/sched.c/f")
+    assert size_report._place(build / "F-Prime" / "x.cpp" / "f", groups) == ("OUTPUT_DIR", "F-Prime/x.cpp/f")
+    assert size_report._place(size_report.KIT_ROOT / "app" / "a.cpp" / "f", groups) == ("WORKSPACE", "app/a.cpp/f")
+    assert size_report._place(Path("/usr/lib/gcc/x.c/f"), groups) == ("/", "/usr/lib/gcc/x.c/f")
+    assert size_report._place(Path(":", "_ZTVN3Kit1AE"), groups) == ("(no paths)", ":/_ZTVN3Kit1AE")
+    assert modules.classify(":/_ZTVN3Kit1AE", "(no paths)") == modules.KIT

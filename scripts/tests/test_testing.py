@@ -37,7 +37,8 @@ def test_the_real_boards_build_every_variant_and_run_nothing():
     suite = yaml.safe_load(testing.BUILD_ONLY_SUITE.read_text())
     assert suite["common"]["build_only"] is True
     assert sorted(name.removeprefix(results.BUILD_ONLY_PREFIX) for name in suite["tests"]) == sorted(
-        name.removeprefix("kit.") for name in yaml.safe_load(testing.SUITE.read_text())["tests"])
+        name.removeprefix("kit.") for name in yaml.safe_load(testing.SUITE.read_text())["tests"]
+        if name.startswith("kit."))
     assert not set(testing.suite_boards(testing.BUILD_ONLY_SUITE)) & set(testing.suite_boards())
 
 

@@ -117,8 +117,11 @@ def _stack_overflow(context: str, first: str) -> list[str]:
 
 
 BAREMETAL_STACK_FAULT = r"KIT FATAL stack=main guard_word=[0-9]+ address=0x[0-9a-f]+: stack overflow"
+# Stands for what F´ prints for the injected assert (Fw/Types/Assert.cpp) at
+# the build's assert level (modules/fprime/Kconfig): see assert_report()
+ASSERT_REPORT = "ASSERT_REPORT"
 ASSERT = [
-    r'Assert: "app/Components/Faults/Faults.cpp:[0-9]+" 42',
+    ASSERT_REPORT,
     r"KIT FATAL event=0x[0-9a-f]+",
     r"KIT HALT reason=kernel_panic code=4 context=\w+ expected=yes",
 ]
@@ -205,6 +208,25 @@ def config_value(build_dir: Path, name: str, default: str | None = None) -> str:
     return match.group(1) if match else str(default)
 
 
+def assert_report(build_dir: Path) -> str:
+    """The injected assert's line: its file's path (relative, or full with
+    FILE_NAME asserts) and line, or with FILE_ID asserts (the fprime-minimal
+    profile) the file's 32-bit id and line; then its argument."""
+    if config_value(build_dir, "CONFIG_FPRIME_ASSERT_FILE_ID", default="n") == "y":
+        return r"Assert: 0x[0-9a-f]{8}:[0-9]+ 42"
+    return r'Assert: ".*app/Components/Faults/Faults.cpp:[0-9]+" 42'
+
+
+def for_build(build_dir: Path, expected: list[str]) -> list[str]:
+    """A scenario's expectations with the build's own values in place of
+    ICOUNT_SHIFT and ASSERT_REPORT."""
+    values = {ICOUNT_SHIFT: config_value(build_dir, "CONFIG_QEMU_ICOUNT_SHIFT", default="0"),
+              ASSERT_REPORT: assert_report(build_dir)}
+    for placeholder, value in values.items():
+        expected = [pattern.replace(placeholder, value) for pattern in expected]
+    return expected
+
+
 def unmatched(lines: list[str], expected: list[str]) -> list[str]:
     """The expectations the lines do not meet, in order (each on a later line
     than the one before it): [] when all are met."""
@@ -238,8 +260,7 @@ def read_until_end(dut: DeviceAdapter, timeout_s: float) -> tuple[list[str], boo
 def test_scenario(dut: DeviceAdapter, scenario: str) -> None:
     build = Path(dut.device_config.build_dir)
     variant = config_value(build, "CONFIG_KIT_VARIANT_NAME")
-    shift = config_value(build, "CONFIG_QEMU_ICOUNT_SHIFT", default="0")
-    expected = [pattern.replace(ICOUNT_SHIFT, shift) for pattern in EXPECTED[variant][scenario]]
+    expected = for_build(build, EXPECTED[variant][scenario])
     timeout_s = DEFAULT_TIMEOUT_S
     if scenario == "soak":
         minutes = int(config_value(build, "CONFIG_KIT_SOAK_MINUTES"))
