@@ -124,7 +124,7 @@ def serve_console(device_dir: Path, stdin_fd: int = 0, stdout_fd: int = 1,
                     output = qemu.read_raw()
                     if output:
                         os.write(stdout_fd, output)
-                    elif not qemu.running():  # the device halted: quiet until flashed again
+                    elif output is not None:  # the device halted: quiet until flashed again
                         selector.unregister(qemu.console_fd())
                         qemu.stop()
                         qemu = None

@@ -171,13 +171,14 @@ class Qemu:
         """The file descriptor the console's output is read from."""
         return self._fd
 
-    def read_raw(self) -> bytes:
-        """The console bytes ready now, unsplit (b"" when there are none or
-        QEMU has closed its console); for a caller that only forwards them."""
+    def read_raw(self) -> bytes | None:
+        """The console bytes ready now, unsplit, for a caller that only
+        forwards them: None when there are none yet, b"" when QEMU has closed
+        its console."""
         try:
             return os.read(self._fd, 65536)
         except BlockingIOError:
-            return b""
+            return None
 
     def send(self, data: bytes) -> None:
         """Bytes to the console: the pipe's input FIFO, or QEMU's stdin."""
