@@ -28,7 +28,6 @@ from . import (
     ablation,
     budget,
     console,
-    device,
     ground,
     report,
     results,
@@ -224,11 +223,8 @@ def _device_test(args: argparse.Namespace) -> int:
     check_provisioned()
     log_dir = Path(args.output).resolve()
     hardware_map = Path(args.hardware_map)
-    devices = device.read_map(hardware_map)
-    for connected in devices:
-        check_board(connected.platform)
-    boards = ", ".join(dict.fromkeys(connected.platform for connected in devices))
     models = tuple(args.model or ())
+    boards = ", ".join(dict.fromkeys(d.platform for d in testing.check_device_run(hardware_map, models)))
     qemu_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
     if not args.skip_twister:
         qemu_lane.append((f"device testing: {', '.join(models) or 'every model'} on {boards} ({hardware_map})",
@@ -417,8 +413,9 @@ def parser() -> argparse.ArgumentParser:
                         "(with --hardware-map)")
     t.add_argument("--hardware-map", help="twister's hardware map of the attached boards (west twister "
                                           "--generate-hardware-map makes one)")
-    t.add_argument("--model", action="append", choices=VARIANTS,
-                   help="with --device-testing: the execution model to play (repeatable; default: every one)")
+    t.add_argument("--model", action="append",
+                   help="with --device-testing: the variant to play (kit.<variant> of tests/deployment/testcase.yaml: "
+                        "baremetal, baremetal_budgeted, ...; repeatable; default: every one)")
     t.set_defaults(func=cmd_test)
     g = sub.add_parser("gds", help="boot a board and model under QEMU with fprime-gds on its ground link")
     g.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")

@@ -37,7 +37,7 @@ from . import (
 from .board import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
 from .board import REFERENCE_BOARD
 from .model import Results
-from .workspace import KIT_ROOT, KitError, check_board, check_variant, environment
+from .workspace import KIT_ROOT, KitError, check_board, environment
 
 HOST_BUILD = KIT_ROOT / "build" / "host-ut"
 SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
@@ -84,6 +84,13 @@ def twister_tally(path: Path) -> Tally:
             elif status in ("failed", "error", "blocked"):
                 tally.failed += 1
     return tally
+
+
+def suite_variants() -> list[str]:
+    """The variants the suite plays (its kit.<variant> scenarios)."""
+    import yaml  # Zephyr's requirements bring PyYAML into the venv
+
+    return [name.removeprefix("kit.") for name in yaml.safe_load(SUITE.read_text())["tests"] if name.startswith("kit.")]
 
 
 def _built_only(suite: dict[str, Any]) -> bool:
@@ -253,18 +260,27 @@ STAND_IN_BOARD = REFERENCE_BOARD
 STAND_IN_MODEL = "baremetal"
 
 
+def check_device_run(hardware_map: Path, models: tuple[str, ...] = ()) -> list[device.Device]:
+    """The connected boards of a hardware map, refused (KitError) where the
+    kit has no port for one or the suite has no such variant."""
+    devices = device.read_map(hardware_map)
+    for connected in devices:
+        check_board(connected.platform)
+    unknown = set(models) - set(suite_variants())
+    if unknown:
+        raise KitError(f"the suite has no {', '.join(sorted(unknown))}: its variants are "
+                       f"{', '.join(suite_variants())} ({SUITE.relative_to(KIT_ROOT)})")
+    return devices
+
+
 def run_device_testing(hardware_map: Path, log_dir: Path, models: tuple[str, ...] = (),
                        out_dir: Path = DEVICE_OUT) -> Tally:
-    """The deployment suite (tests/deployment, every model or `models`) on
+    """The deployment suite (tests/deployment, every variant or `models`) on
     each connected board of a twister hardware map, through twister's device
     testing: each scenario flashes the board with its runner, reads its
     console (its port or serial_pty) and asserts what the QEMU run asserts
     (pytest/test_scenarios.py)."""
-    devices = device.read_map(hardware_map)
-    for connected in devices:
-        check_board(connected.platform)
-    for model in models:
-        check_variant(model)
+    devices = check_device_run(hardware_map, models)
     # --force-platform: a real board is not in the suite's platform_allow,
     # which lists where the QEMU run plays
     command = ["west", "twister", "--device-testing", "--hardware-map", str(hardware_map.resolve()),
