@@ -77,8 +77,9 @@ def is_real_board(board: str) -> bool:
 
 
 def check_runs_here(board: str) -> None:
-    """Refuse a real board where the command must run the deployment: the
-    kit builds it (tests/boards) and runs nothing on it yet."""
+    """Refuse a real board where the command must run the deployment under
+    QEMU: the kit builds it (tests/boards) and runs the suite on it only
+    through device testing (kit test --device-testing)."""
     if is_real_board(board):
         raise KitError(f"{board} is a real board: the kit builds it (kit test, tests/boards) but cannot run it "
                        f"here (no emulator; on the board itself: kit test --device-testing --hardware-map FILE). "
