@@ -140,9 +140,9 @@ def cmd_test(args: argparse.Namespace) -> int:
     qemu_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
     host_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
     host_lane_done = threading.Event()
-    # Every board's size reports at once, beside the determinism runs (their
-    # figures are virtual time, so the shared cores cannot move them), done
-    # before the ground link's checks and the first budget
+    # Every board's size reports at once, in the background (lowest CPU
+    # priority) from the determinism runs on, through the ground link's
+    # checks; done before the first budget, which reads them
     size_reports: concurrent.futures.Future[None] = concurrent.futures.Future()
     if not args.skip_twister:
         def budget(board: str) -> testing.Tally:
@@ -150,7 +150,8 @@ def cmd_test(args: argparse.Namespace) -> int:
             return testing.check_budget(board, log_dir, _budget(args), args.update_baseline)
 
         def determinism() -> testing.Tally:
-            threading.Thread(target=_settle, args=(size_reports, testing.make_size_reports), daemon=True).start()
+            threading.Thread(target=_settle, args=(size_reports, functools.partial(
+                testing.make_size_reports, background=True)), daemon=True).start()
             return testing.check_determinism(log_dir)
 
         built = f"; built only: {', '.join(built_only)}" if built_only else ""
@@ -159,11 +160,11 @@ def cmd_test(args: argparse.Namespace) -> int:
         # Before the budget: the board's report takes the serial-load sweep from it
         def ground() -> testing.Tally:
             host_lane_done.wait()
-            size_reports.result()
             return testing.run_integration(log_dir)
 
         if boards:  # what reads the runs: none on a board only built
-            qemu_lane.append(("determinism: twister's binaries run again (size reports beside)", determinism))
+            qemu_lane.append(("determinism: twister's binaries run again (size reports in the background)",
+                              determinism))
             qemu_lane.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
                               ground))
         for board in boards:

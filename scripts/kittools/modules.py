@@ -75,20 +75,30 @@ _BY_SYMBOL = (
 )
 
 
-def reports(builds: list[Path], jobs: int = 2) -> list[tuple[dict, dict]]:
-    """(rom, ram) reports of several builds (`report`), `jobs` builds at a time."""
+#: The niceness of size reports made beside other work (`reports(background=True)`)
+BACKGROUND_NICENESS = 19
+
+
+def reports(builds: list[Path], jobs: int = 2, background: bool = False) -> list[tuple[dict, dict]]:
+    """(rom, ram) reports of several builds (`report`), `jobs` builds at a
+    time; `background`: at the lowest CPU priority, so that they take only
+    the CPU time the work beside them leaves (the ground link's checks,
+    whose time-outs are the host's)."""
+    niceness = BACKGROUND_NICENESS if background else 0
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        return list(pool.map(lambda build: (report(build, "rom"), report(build, "ram")), builds))
+        return list(pool.map(lambda build: (report(build, "rom", niceness), report(build, "ram", niceness)), builds))
 
 
-def _make_reports(build_dir: Path, elf: Path) -> None:
+def _make_reports(build_dir: Path, elf: Path, niceness: int = 0) -> None:
     """<kind>-symbols.json in the build folder: Zephyr's size_report
     attribution without its display tree (kittools.size_report), in a
     process of its own so that two builds take two cores. PYTHONHASHSEED=0:
     the tool gives a symbol that shares its address with another one name or
     the other by the order of a Python set, so that two runs on one image
-    moved a few bytes between layers."""
+    moved a few bytes between layers. `niceness`: run it under nice(1)."""
     command = [sys.executable, "-m", "kittools.size_report", str(elf), str(build_dir)]
+    if niceness:
+        command = ["nice", "-n", str(niceness), *command]
     result = subprocess.run(command, cwd=build_dir, env={**environment(), "PYTHONHASHSEED": "0"},
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     missing = [kind for kind in size_report.KINDS if not size_report.output(build_dir, kind).is_file()]
@@ -138,7 +148,7 @@ def breakdown(report: dict) -> dict[str, int]:
     return sizes
 
 
-def report(build_dir: Path, kind: str) -> dict:
+def report(build_dir: Path, kind: str, niceness: int = 0) -> dict:
     """A build's rom or ram report (every symbol, its source path, its
     bytes: kittools.size_report), made if missing or made from another
     image. "Another image" is decided by content: a configure relinks
@@ -153,7 +163,7 @@ def report(build_dir: Path, kind: str) -> dict:
         raise KitError(f"{elf} is missing: build first")
     image = hashlib.sha256(elf.read_bytes()).hexdigest()
     if not path.is_file() or not made_from.is_file() or made_from.read_text().strip() != image:
-        _make_reports(build_dir, elf)
+        _make_reports(build_dir, elf, niceness)
         made_from.write_text(image + "\n")
     loaded: dict[str, Any] = json.loads(path.read_text())
     return loaded

@@ -541,17 +541,19 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
     return Tally(failed=1) if failures else Tally(passed=1)
 
 
-def make_size_reports(twister_out: Path = TWISTER_OUT) -> None:
+def make_size_reports(twister_out: Path = TWISTER_OUT, background: bool = False) -> None:
     """Zephyr's rom and ram reports of every build of the suite, all boards'
-    at once (kittools.modules: most of a minute of one core each, two builds
-    at a time), beside the determinism runs (`kit test`) and before the
-    budget steps read them board by board. Not beside the ground link's
-    checks, whose time-outs are the host's: those keep the host to
-    themselves, as they were measured. A failure is left to the budget step,
-    which makes the report again and says why."""
+    at once (kittools.modules: about 20 s of one core each, two builds at a
+    time), before the budget steps read them board by board. `background`:
+    at the lowest CPU priority, beside the determinism runs and the ground
+    link's checks (`kit test`): those take the CPU they need first (QEMU
+    counts virtual time; the checks' time-outs are the host's) and the
+    reports the rest. A failure is left to the budget step, which makes the
+    report again and says why."""
     try:
         modules.reports([build for _, build in results.suite_builds(twister_out)
-                         + results.suite_builds(twister_out, prefix=results.BUILD_ONLY_PREFIX)])
+                         + results.suite_builds(twister_out, prefix=results.BUILD_ONLY_PREFIX)],
+                        background=background)
     except KitError:
         pass  # made again, and reported, by the budget step
 
