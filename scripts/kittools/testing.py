@@ -5,6 +5,7 @@ and the tooling's own pytest, with one closing count."""
 from __future__ import annotations
 
 import concurrent.futures
+import hashlib
 import json
 import re
 import shutil
@@ -229,11 +230,40 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     return tally
 
 
+#: In a twister outdir: what the last clean run configured its builds from
+CONFIGURED_FROM = "kit-configured-from.sha256"
+#: The environment a build's configuration depends on beyond its files (the toolchain)
+_CONFIGURE_ENVIRONMENT = ("ZEPHYR_TOOLCHAIN_VARIANT", "GNUARMEMB_TOOLCHAIN_PATH", "ZEPHYR_SDK_INSTALL_DIR")
+
+
+def configured_from() -> str:
+    """What twister configures the kit's builds from that their own build
+    files do not track: every test suite's testcase.yaml (twister hands its
+    extra_args to CMake once) and the toolchain's environment. Everything
+    else a configuration reads (CMake and Kconfig files, .conf fragments,
+    snippets, F´'s FPP files) is a configure dependency ninja checks itself."""
+    digest = hashlib.sha256()
+    for suite in sorted(KIT_ROOT.glob("tests/**/testcase.yaml")):
+        digest.update(f"{suite.relative_to(KIT_ROOT)}\0".encode() + suite.read_bytes() + b"\0")
+    env = environment()
+    for name in _CONFIGURE_ENVIRONMENT:
+        digest.update(f"{name}={env.get(name, '')}\0".encode())
+    return digest.hexdigest()
+
+
 def _play(command: list[str], log: Path, out_dir: Path) -> Tally:
     """Run a twister command that plays the suite into `out_dir`, a line
     per finished configuration and per scenario played; its tally."""
     # -n: build in the last run's folders, so that a second run rebuilds only
-    # what changed (twister configures again; ninja and ccache do the rest).
+    # what changed (ccache does the rest). Twister configures each build
+    # again (about 20 s of a core with F´'s sub-build), unless told not to
+    # (--aggressive-no-clean): done when the last run passed and what
+    # twister configures from is as it was then (configured_from); ninja
+    # configures again whatever else changed.
+    stamp = out_dir / CONFIGURED_FROM
+    fingerprint = configured_from()
+    reuse = stamp.is_file() and stamp.read_text().strip() == fingerprint
+    stamp.unlink(missing_ok=True)
     # The last run's consoles go first: a scenario this run does not play (or
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
@@ -241,12 +271,14 @@ def _play(command: list[str], log: Path, out_dir: Path) -> Tally:
     # ... and so does the last run's report: a twister that dies before
     # writing its own must not be counted by the last one's
     (out_dir / "twister.json").unlink(missing_ok=True)
-    command = [*command, "-n", "-v", "--inline-logs", "--outdir", str(out_dir)]
+    command = [*command, "--aggressive-no-clean" if reuse else "-n", "-v", "--inline-logs", "--outdir", str(out_dir)]
     with RunWatcher(out_dir):
         code = _run_streamed(command, log, TwisterProgress().line)
     tally = twister_tally(out_dir / "twister.json")
     if code != 0 and tally.failed == 0:
         tally.failed += 1  # twister itself failed (for example a configuration error)
+    if code == 0 and tally.failed == 0:
+        stamp.write_text(fingerprint + "\n")
     return tally
 
 

@@ -184,3 +184,42 @@ def test_streamed_output_is_logged_whole_and_said_line_by_line(tmp_path, monkeyp
     assert (tmp_path / "t.log").read_bytes() == b"a\nb1\rb2\n"
     assert heard == ["a", "b1", "b2"]
     assert capsys.readouterr().out == "said b1\nsaid b2\n"
+
+
+def _fake_twister(monkeypatch, commands, status="passed", code=0):
+    """testing._play's twister: records its command, writes its report."""
+    def run(command, log, say):
+        commands.append(command)
+        out_dir = command[command.index("--outdir") + 1]
+        with open(os.path.join(out_dir, "twister.json"), "w") as report:
+            json.dump({"testsuites": [{"name": "tests/deployment/kit.rtos", "status": status}]}, report)
+        return code
+
+    monkeypatch.setattr(testing, "_run_streamed", run)
+
+
+def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_the_same(tmp_path, monkeypatch):
+    suite = tmp_path / "tests" / "deployment" / "testcase.yaml"
+    suite.parent.mkdir(parents=True)
+    suite.write_text("tests: {kit.rtos: {}}\n")
+    monkeypatch.setattr(testing, "KIT_ROOT", tmp_path)
+    monkeypatch.setattr(testing, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "gnuarmemb"})
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    commands: list[list[str]] = []
+
+    def play():
+        testing._play(["west", "twister"], tmp_path / "t.log", out_dir)
+        return "--aggressive-no-clean" in commands[-1], "-n" in commands[-1]
+
+    _fake_twister(monkeypatch, commands)
+    assert play() == (False, True)  # nothing configured yet: twister configures
+    assert play() == (True, False)  # as configured then: ninja's own checks suffice
+    suite.write_text("tests: {kit.rtos: {extra_args: SNIPPET=fprime-minimal}}\n")
+    assert play() == (False, True)  # twister hands extra_args to CMake only when it configures
+    monkeypatch.setattr(testing, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "zephyr"})
+    assert play() == (False, True)  # another toolchain
+    _fake_twister(monkeypatch, commands, status="error")
+    assert play() == (True, False)
+    _fake_twister(monkeypatch, commands)
+    assert play() == (False, True)  # after a failed run: configure again (a configure may have failed)
