@@ -50,6 +50,9 @@ def _say(message: str) -> None:
 
 #: What `kit compare` plays: the comparison run and the load sweep
 COMPARISON_SCENARIOS = ("nominal", "load")
+#: The suite's tag for its footprint profiles' builds (tests/deployment/testcase.yaml),
+#: which `kit compare` leaves out: the comparison is the kit profile's
+PROFILE_TAG = "profile"
 
 
 def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
@@ -58,7 +61,8 @@ def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
     returns each board's results file and whether every run passed."""
     out_dir.mkdir(parents=True, exist_ok=True)
     twister_out = out_dir / "twister"
-    tally = testing.run_twister(boards, out_dir, twister_out, scenarios=COMPARISON_SCENARIOS)
+    tally = testing.run_twister(boards, out_dir, twister_out, scenarios=COMPARISON_SCENARIOS,
+                                exclude_tags=(PROFILE_TAG,))
     testing.make_size_reports(twister_out)  # every board's at once, two builds at a time
     files = []
     for board in boards:

@@ -211,9 +211,10 @@ class RunWatcher:
 
 
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
-                scenarios: tuple[str, ...] = ()) -> Tally:
+                scenarios: tuple[str, ...] = (), exclude_tags: tuple[str, ...] = ()) -> Tally:
     """The suite (tests/) on every board: one build per execution model and
-    board, each playing every scenario, or only `scenarios` (pytest's -k);
+    board, each playing every scenario, or only `scenarios` (pytest's -k),
+    but for the test suites tagged with one of `exclude_tags`;
     two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
@@ -224,6 +225,8 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
         command += ["-p", platform]
     if scenarios:
         command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
+    for tag in exclude_tags:
+        command += ["--exclude-tag", tag]
     tally = _play(command, log_dir / "twister.log", out_dir)
     say_built_only(out_dir)
     say_profiles(out_dir)
@@ -264,6 +267,12 @@ def _play(command: list[str], log: Path, out_dir: Path) -> Tally:
     fingerprint = configured_from()
     reuse = stamp.is_file() and stamp.read_text().strip() == fingerprint
     stamp.unlink(missing_ok=True)
+    if not reuse:
+        # The Kconfig file twister wrote for an earlier suite's extra_configs:
+        # twister hands any it finds to CMake, whatever the suite says now
+        # (the kit's suites set Kconfig through extra_args: testcase.yaml)
+        for overlay in out_dir.glob("*/**/twister/testsuite_extra.conf"):
+            overlay.unlink()
     # The last run's consoles go first: a scenario this run does not play (or
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):

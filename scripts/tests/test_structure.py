@@ -59,9 +59,13 @@ def test_the_boot_choice_lists_every_scenario_and_the_suite_plays_them():
 
 def test_twister_files_choose_only_existing_models_and_scenarios():
     scenarios = _scenario_sources() | {"at_boot"}
-    for path in (KIT_ROOT / "app" / "sample.yaml", KIT_ROOT / "tests" / "deployment" / "testcase.yaml"):
+    for path in (KIT_ROOT / "app" / "sample.yaml", KIT_ROOT / "tests" / "deployment" / "testcase.yaml",
+                 KIT_ROOT / "tests" / "boards" / "testcase.yaml"):
         for name, test in yaml.safe_load(path.read_text())["tests"].items():
-            configs = test.get("extra_configs", [])
+            # Kconfig settings as extra_configs, or as extra_args (CMake's -DCONFIG_...)
+            args = test.get("extra_args", [])
+            configs = test.get("extra_configs", []) + [
+                a for a in (args.split() if isinstance(args, str) else args) if a.startswith("CONFIG_")]
             models = [c for c in configs if c.startswith("CONFIG_KIT_MODEL_")]
             assert len(models) == 1, f"{path.name} {name}: one model, got {models}"
             model = models[0].removeprefix("CONFIG_KIT_MODEL_").removesuffix("=y").lower()
@@ -100,3 +104,12 @@ def test_the_floor_and_the_suite_run_on_the_same_boards():
     suite = platforms(KIT_ROOT / "tests" / "deployment" / "testcase.yaml")
     for floor in (KIT_ROOT / "tests" / "floor").glob("*/testcase.yaml"):
         assert platforms(floor) == suite, f"{floor.relative_to(KIT_ROOT)} runs on other boards than the suite"
+
+
+def test_kit_compare_leaves_out_exactly_the_profile_builds():
+    from kittools import cli, results
+
+    suite = yaml.safe_load((KIT_ROOT / "tests" / "deployment" / "testcase.yaml").read_text())
+    for name, test in suite["tests"].items():
+        tagged = cli.PROFILE_TAG in str(test.get("tags", "")).split()
+        assert tagged == name.startswith(results.PROFILE_PREFIX), name
