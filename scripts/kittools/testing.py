@@ -270,9 +270,12 @@ def _play(command: list[str], log: Path, out_dir: Path) -> Tally:
     if not reuse:
         # The Kconfig file twister wrote for an earlier suite's extra_configs:
         # twister hands any it finds to CMake, whatever the suite says now
-        # (the kit's suites set Kconfig through extra_args: testcase.yaml)
+        # (the kit's suites set Kconfig through extra_args: testcase.yaml).
+        # Its build folder is configured from scratch: its CMake cache names
+        # the file (OVERLAY_CONFIG) and twister no longer passes it.
         for overlay in out_dir.glob("*/**/twister/testsuite_extra.conf"):
             overlay.unlink()
+            (overlay.parent.parent / "CMakeCache.txt").unlink(missing_ok=True)
     # The last run's consoles go first: a scenario this run does not play (or
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):

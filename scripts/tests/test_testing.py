@@ -223,3 +223,21 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
     assert play() == (True, False)
     _fake_twister(monkeypatch, commands)
     assert play() == (False, True)  # after a failed run: configure again (a configure may have failed)
+
+
+def test_an_earlier_suites_kconfig_file_goes_with_its_cmake_cache(tmp_path, monkeypatch):
+    monkeypatch.setattr(testing, "KIT_ROOT", tmp_path)
+    monkeypatch.setattr(testing, "environment", lambda: {})
+    out_dir = tmp_path / "out"
+    build = out_dir / "qemu_cortex_m3_ti_lm3s6965" / "deployment" / "kit.rtos"
+    (build / "twister").mkdir(parents=True)
+    (build / "twister" / "testsuite_extra.conf").write_text("CONFIG_KIT_MODEL_RTOS=y")
+    (build / "CMakeCache.txt").write_text("OVERLAY_CONFIG:UNINITIALIZED=twister/testsuite_extra.conf\n")
+    other = out_dir / "mps2_an385" / "deployment" / "kit.rtos"
+    other.mkdir(parents=True)
+    (other / "CMakeCache.txt").write_text("\n")
+    _fake_twister(monkeypatch, [])
+    testing._play(["west", "twister"], tmp_path / "t.log", out_dir)
+    assert not (build / "twister" / "testsuite_extra.conf").exists()
+    assert not (build / "CMakeCache.txt").exists()  # configured from scratch
+    assert (other / "CMakeCache.txt").exists()
