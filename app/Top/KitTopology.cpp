@@ -87,6 +87,17 @@ namespace {
 #if !DT_HAS_CHOSEN(kit_link_uart)
 #error "kit: the board's app.overlay must choose its link UART (chosen { kit,link-uart = &uartN; })"
 #endif
+#if !DT_NODE_HAS_PROP(DT_CHOSEN(kit_link_uart), current_speed)
+#error "kit: the link UART needs its line rate: current-speed = <115200>; in the board's app.overlay"
+#endif
+// The line rate: the ground tools pace their bytes to it (the LINK line prints it)
+constexpr U32 LINK_BAUD_RATE = DT_PROP(DT_CHOSEN(kit_link_uart), current_speed);
+
+// The link UART's receive counts, for LinkHealth's telemetry
+LinkHealth::UartCounts linkUartCounts() {
+    const Zephyr::ZephyrUartDriver::ReceiveCounts counts = linkUart.receiveCounts();
+    return {counts.received, counts.ringDrops, counts.overruns, counts.parity, counts.framing, counts.breaks};
+}
 
 // F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
 // the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
@@ -106,7 +117,7 @@ void configureLink(Fw::MemAllocator& allocator) {
     linkBuffers.setup(Link::bufferManagerId, 0, allocator, bins);
 
     // F´'s F´-protocol detector, wrapped to count what it rejects
-    linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight);
+    linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight, linkUartCounts);
     frameAccumulator.configure(linkHealth.detector(), 1, allocator, Link::accumulatorSize);
 
     // Events first, then telemetry. The buffer port (file downlink) is
@@ -122,7 +133,7 @@ void configureLink(Fw::MemAllocator& allocator) {
     // the device is not ready, leaving a link that never speaks: stop here
     const struct device* const uart = DEVICE_DT_GET(DT_CHOSEN(kit_link_uart));
     FW_ASSERT(device_is_ready(uart));
-    linkUart.configure(uart, Link::baudRate);
+    linkUart.configure(uart, LINK_BAUD_RATE);
 }
 
 void configureTopology(const TopologyState& state) {
@@ -157,6 +168,14 @@ void configureTopology(const TopologyState& state) {
 
 FwSizeType linkBufferBytes() {
     return s_linkBufferBytes;
+}
+
+U32 linkBaudRate() {
+    return LINK_BAUD_RATE;
+}
+
+bool linkUartErrorsReported() {
+    return linkUart.errorsReported();
 }
 
 FwOpcodeType noOpOpcode() {

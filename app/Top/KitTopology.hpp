@@ -63,6 +63,12 @@ U32 expectedCycles(FwIndexType rg, U32 ticks);
 //! pool, frame accumulator, ComQueue's packet queues)
 FwSizeType linkBufferBytes();
 
+//! The link UART's line rate (bits/s: its devicetree current-speed)
+U32 linkBaudRate();
+
+//! The link UART's driver reports receive errors (uart_err_check)
+bool linkUartErrorsReported();
+
 //! Opcode of the dispatcher's built-in NO_OP (its base ID + 0)
 FwOpcodeType noOpOpcode();
 

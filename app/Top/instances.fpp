@@ -55,8 +55,9 @@ module Kit {
     @ Ground commands the dispatcher may hold at once (LinkHealth drops
     @ more, counted): a fuzzing batch's worth, four and its NO_OP
     constant commandsInFlight = 5
-    @ The link UART's line rate (QEMU ignores it; a real board does not)
-    constant baudRate = 115200
+    # The link's line rate is the link UART's devicetree current-speed
+    # (boards/<board>/app.overlay): one place, read by the firmware
+    # (KitTopology.cpp) and printed on its LINK line for the ground tools
   }
 
   # ----------------------------------------------------------------------

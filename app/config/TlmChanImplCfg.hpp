@@ -17,13 +17,13 @@ enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE) && defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 36  //!< three more for the passive rate groups, three fewer for the passive dispatcher
+    TLMCHAN_HASH_BUCKETS = 42  //!< three more for the passive rate groups, three fewer for the passive dispatcher
 #elif defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 39  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
+    TLMCHAN_HASH_BUCKETS = 45  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
 #elif defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 33  //!< PassiveCmdDispatcher has no channels, CommandDispatcher three
+    TLMCHAN_HASH_BUCKETS = 39  //!< PassiveCmdDispatcher has no channels, CommandDispatcher three
 #else
-    TLMCHAN_HASH_BUCKETS = 36  //!< Buckets: at least the number of channels
+    TLMCHAN_HASH_BUCKETS = 42  //!< Buckets: at least the number of channels
 #endif
 };
 }  // namespace

@@ -29,15 +29,24 @@ bool segmentRequested() {
 
 // The axis' name and unit in the SWEEP record
 Report::SweepPoint pointOf(const Timing::Segment& segment) {
-    const bool uplink = segment.axis == SegmentAxis::UPLINK;
-    return {uplink ? "uplink" : "downlink",
-            segment.point,
-            segment.level,
-            uplink ? "cmd/s" : "pkt/s",
-            0,
-            segment.ticks,
-            0,
-            0};
+    const char* name = "uplink";
+    const char* unit = "cmd/s";
+    switch (segment.axis.e) {
+        case SegmentAxis::UPLINK:
+            break;
+        case SegmentAxis::DOWNLINK:
+            name = "downlink";
+            unit = "pkt/s";
+            break;
+        case SegmentAxis::NOISE:
+            name = "noise";
+            unit = "%";  // of the line rate
+            break;
+        default:
+            FW_ASSERT(0, static_cast<FwAssertArgType>(segment.axis.e));
+            break;
+    }
+    return {name, segment.point, segment.level, unit, 0, segment.ticks, 0, 0};
 }
 
 }  // namespace

@@ -147,7 +147,11 @@ void banner() {
 
 void linkReady() {
     // The dictionary id lets the ground refuse another build's dictionary
-    printk("KIT LINK ready uart=%s dictionary=%s\n", DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name, KIT_DICTIONARY_ID);
+    // The line rate paces the ground tools' bytes; uart_errors says whether
+    // the UART's receive errors can be counted on this board
+    printk("KIT LINK ready uart=%s baud=%u uart_errors=%s dictionary=%s\n",
+           DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name, static_cast<unsigned>(linkBaudRate()),
+           linkUartErrorsReported() ? "reported" : "unsupported", KIT_DICTIONARY_ID);
 }
 
 bool commands(const Uplink::Frame* frames, FwSizeType count) {

@@ -36,6 +36,7 @@ from .link_client import (
     FW_PACKET_LOG,
     FW_PACKET_TELEM,
     HEADER,
+    NOISE_BYTES,
     START_WORD,
     TRAILER,
     Downlink,
@@ -47,10 +48,8 @@ from .workspace import KitError
 # Closes every batch: a frame still waiting for its claimed length (a
 # truncated one) is completed by these and rejected, never left pending
 PADDING = bytes(80)
-# Bytes garbage never holds: no start word (DE AD BE EF) can form in it or
-# across its edges with a neighbour
-START_WORD_BYTES = frozenset(b"\xde\xad\xbe\xef")
-GARBAGE_BYTES = bytes(value for value in range(256) if value not in START_WORD_BYTES)
+# Garbage is noise: no start word can form in it or across its edges
+GARBAGE_BYTES = NOISE_BYTES
 
 INVALID_KINDS = ("garbage", "bad_checksum", "truncated", "oversized", "length_wraps", "unknown_packet",
                  "bad_opcode", "bad_arguments")
@@ -133,6 +132,8 @@ class Outcome:
     sent: Counter[str] = field(default_factory=Counter)
     noops_sent: int = 0
     noops_answered: int = 0
+    #: Every byte written to the link (frames, garbage, padding)
+    bytes_sent: int = 0
     events: Counter[str] = field(default_factory=Counter)
     telemetry: dict[str, int] = field(default_factory=dict)
     #: The console lines that show the deployment halted ("" while it runs)
@@ -161,6 +162,10 @@ class Outcome:
              + ")", sum(self.events[e] for e in DISPATCHER_REFUSALS), bad_commands),
             # Paced by its NO_OPs, the fuzzer never has more commands in flight than the link lets through
             ("LinkHealth.CommandsDropped", self.telemetry.get("Kit.linkHealth.CommandsDropped"), 0),
+            # Each batch fits the UART driver's ring, and waits for its NO_OP's answer
+            ("LinkHealth.UartRingDrops", self.telemetry.get("Kit.linkHealth.UartRingDrops"), 0),
+            # QEMU's UART holds back what it cannot take: the UART reads every byte sent
+            ("LinkHealth.UartBytesReceived", self.telemetry.get("Kit.linkHealth.UartBytesReceived"), self.bytes_sent),
         ]
         if self.dispatcher_telemetry:
             checks.append(("cmdDisp.CommandErrors", self.telemetry.get(DISPATCHER_ERRORS_CHANNEL), bad_commands))
@@ -178,7 +183,7 @@ class Outcome:
 
     def to_json(self) -> dict[str, Any]:
         return {"seed": self.seed, "invalid_sent": self.invalid_sent, "sent": dict(sorted(self.sent.items())),
-                "noops_sent": self.noops_sent, "noops_answered": self.noops_answered,
+                "noops_sent": self.noops_sent, "noops_answered": self.noops_answered, "bytes_sent": self.bytes_sent,
                 "rejected": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())},
                 "events": dict(sorted(self.events.items())), "halt": self.halt, "missed": self.missed,
                 "failures": self.failures()}
@@ -199,7 +204,10 @@ SETTLE_S = 0.3
 # Telemetry read at the end
 COUNT_CHANNELS = ("Kit.linkHealth.FramesDetected", "Kit.linkHealth.BadChecksums", "Kit.linkHealth.BytesDiscarded",
                   "Kit.linkHealth.Oversized", "Kit.linkHealth.UnknownPackets", "Kit.linkHealth.CommandsDropped",
-                  "Kit.cmdDisp.CommandErrors", "Kit.cmdDisp.CommandsDispatched")
+                  "Kit.cmdDisp.CommandErrors", "Kit.cmdDisp.CommandsDispatched",
+                  # where the bytes went before frame detection: the UART read them all, its ring kept them
+                  # (the fuzzer's batches fit the ring: a drop here is a failure)
+                  "Kit.linkHealth.UartBytesReceived", "Kit.linkHealth.UartRingDrops")
 
 
 def answered(link: Downlink, noops: int) -> bool:
@@ -245,6 +253,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
                 batch += invalid
                 outcome.sent[kind] += 1
             link.send(batch + noop + PADDING)
+            outcome.bytes_sent += len(batch) + len(noop) + len(PADDING)
             outcome.noops_sent += 1
             replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
             outcome.halt = halted()

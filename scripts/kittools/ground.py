@@ -81,9 +81,9 @@ def boot(link: Link) -> Qemu:
     qemu = Qemu(link.build_dir, "ground")
     try:
         qemu.read_until(lambda line: line.startswith(LINK_READY) or ends_run(line), BOOT_TIMEOUT_S)
-        ready = next((line for line in qemu.lines if line.startswith(LINK_READY)), None)
-        if ready is None:
+        if not any(line.startswith(LINK_READY) for line in qemu.lines):
             raise KitError(f"the firmware in {link.build_dir} did not bring its link up:\n{qemu.text()}")
+        ready = link_line(qemu)
         built_with = LINK_DICTIONARY.search(ready)
         given = dictionary_id(link.dictionary)
         if built_with is None or built_with.group(1) != given:
@@ -95,6 +95,14 @@ def boot(link: Link) -> Qemu:
         qemu.stop()
         raise
     return qemu
+
+
+def link_line(qemu: Qemu) -> str:
+    """The LINK line of a booted build (boot waited for it)."""
+    line = next((line for line in qemu.lines if line.startswith(LINK_READY)), None)
+    if line is None:
+        raise KitError("the firmware has not printed its LINK line: boot it with kittools.ground.boot")
+    return line
 
 
 def scenario_of(build_dir: Path) -> str | None:

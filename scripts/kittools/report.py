@@ -11,7 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from . import analysis, budget, plots, render, results, tables
+from . import analysis, budget, link_report, plots, render, results, tables
 from .budget import Budget
 from .document import Image, Section
 from .model import Results
@@ -33,8 +33,7 @@ def sweep_sections(data: Results) -> list[Section]:
     sections: list[Section] = [tables.breaking_points_table(found), analysis.sweep_guidance(data, found)]
     for axis in dict.fromkeys(a for v in sorted(found) for a in found[v].axes()):
         sections += [plots.sweep_chart(found, cycles_hz, axis), tables.sweep_table(found, cycles_hz, axis)]
-    link = tables.serial_link_table(data)
-    return sections + ([link] if link is not None else [])
+    return sections + link_report.sections(data)
 
 
 def build_sections(data: Results, baseline: Results | None, limits: Budget) -> tuple[list[Section], list[str]]:

@@ -156,15 +156,20 @@ def integration_logs(log_dir: Path, platform: str, build_name: str) -> Path:
 
 
 SERIAL_SWEEP_FILE = "serial.json"
+#: The flood's records (kittools.flood), beside the sweep's
+FLOOD_FILE = "flood.json"
+#: The ground link's record files whose "lines" go into a variant's records
+LINK_RECORD_FILES = (SERIAL_SWEEP_FILE, FLOOD_FILE)
 
 
 def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> model.Results:
     """Results of a twister run of tests/deployment on one board, in the
     results-file schema: per build (one per variant), the nominal scenario's
     records, footprint and modules, plus the sweep records of the load
-    scenario when it played, those of the serial-load sweep `kit test`
-    ran on the build (under `log_dir`), and the kernel floor of the model's
-    dispatch path from the run's tests/floor builds (kittools.floor)."""
+    scenario when it played, those of the serial-load sweep and the flood
+    `kit test` ran on the build (under `log_dir`), and the kernel floor of
+    the model's dispatch path from the run's tests/floor builds
+    (kittools.floor)."""
     found: list[compare.VariantData] = []
     builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
               if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]
@@ -181,9 +186,11 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
             run.records.append(floors[path])
         if path == floor.PATH_OF_CONTEXT["thread"]:  # Zephyr's own figures, for the threaded paths
             run.records += zephyr_figures
-        serial = integration_logs(log_dir, platform, build.name) / SERIAL_SWEEP_FILE if log_dir is not None else None
-        if serial is not None and serial.is_file():
-            run.records += serial_sweep.records_of(serial)
+        if log_dir is not None:
+            for file_name in LINK_RECORD_FILES:
+                records_file = integration_logs(log_dir, platform, build.name) / file_name
+                if records_file.is_file():
+                    run.records += serial_sweep.records_of(records_file)
         found.append(compare.VariantData(
             run.variant, measure(build), run, modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
             {kind: symbols.table(symbols.leaves(report), symbols.SYMBOL_FLOOR)

@@ -7,7 +7,8 @@ docs/results.md describes the records."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import statistics
+from dataclasses import dataclass, field
 from typing import Any
 
 
@@ -41,9 +42,20 @@ class Sweep:
     points: list[Point]
     #: (axis, rate group) -> the firmware's own breaking point (µs, None: none)
     reported: dict[tuple[str, str], int | None]
-    #: SWEEP records cut short (an interrupt's console message, such as the
-    #: UART driver's overrun line, printed into the middle of one)
+    #: SWEEP records cut short (an interrupt's console message printed
+    #: into the middle of one)
     malformed: int = 0
+    #: (axis, level, rate group) -> the smallest and largest latency_max of
+    #: a level played more than once (the serial axes: host-timed input
+    #: makes their latencies differ from play to play); its point is the
+    #: median of the plays, field by field
+    spread: dict[tuple[str, int, str], tuple[int, int]] = field(default_factory=dict)
+    #: (axis, level, rate group) -> how many times it was played
+    plays: dict[tuple[str, int, str], int] = field(default_factory=dict)
+
+    def repeats(self, axis: str) -> int:
+        """How many times each level of an axis was played (the most of any)."""
+        return max((n for key, n in self.plays.items() if key[0] == axis), default=1)
 
     def axes(self) -> list[str]:
         return list(dict.fromkeys(p.axis for p in self.points))
@@ -102,14 +114,27 @@ SWEEP_FIELDS = ("axis", "level", "unit", "burst", "rg", "hz", "slips", "late_sta
                 "jitter_max")
 
 
+def median_point(plays: list[Point]) -> Point:
+    """One point for a level played several times: the median of each
+    count and latency (the lower median: a level misses a deadline when
+    most of its plays did)."""
+    first = plays[0]
+    return Point(first.axis, first.level, first.unit, first.burst, first.rate_group, first.hz,
+                 *(statistics.median_low(getattr(p, name) for p in plays)
+                   for name in ("slips", "late_starts", "latency_p99", "latency_max", "jitter_max", "shed")))
+
+
 def of_records(records: list[dict[str, Any]]) -> Sweep | None:
     """The sweep in a variant's records, or None when it has none."""
     sweeps = [r for r in records if r.get("kind") == "SWEEP"]
     whole = [r for r in sweeps if all(key in r for key in SWEEP_FIELDS)]
-    points = [Point(str(r["axis"]), _int(r, "level"), str(r["unit"]), _int(r, "burst"), str(r["rg"]), _int(r, "hz"),
-                    _int(r, "slips"), _int(r, "late_starts"), _int(r, "latency_p99"), _int(r, "latency_max"),
-                    _int(r, "jitter_max"), int(str(r.get("load_dropped", 0)), 0))
-              for r in whole]
+    plays: dict[tuple[str, int, str], list[Point]] = {}
+    for r in whole:
+        point = Point(str(r["axis"]), _int(r, "level"), str(r["unit"]), _int(r, "burst"), str(r["rg"]), _int(r, "hz"),
+                      _int(r, "slips"), _int(r, "late_starts"), _int(r, "latency_p99"), _int(r, "latency_max"),
+                      _int(r, "jitter_max"), int(str(r.get("load_dropped", 0)), 0))
+        plays.setdefault((point.axis, point.level, point.rate_group), []).append(point)
+    points = [median_point(found) for found in plays.values()]
     if not points:
         return None
     reported: dict[tuple[str, str], int | None] = {}
@@ -117,4 +142,6 @@ def of_records(records: list[dict[str, Any]]) -> Sweep | None:
         if r.get("kind") == "BREAK":
             value = str(r["level"])
             reported[(str(r["axis"]), str(r["rg"]))] = None if value == "none" else int(value)
-    return Sweep(points, reported, len(sweeps) - len(whole))
+    spread = {key: (min(p.latency_max for p in found), max(p.latency_max for p in found))
+              for key, found in plays.items() if len(found) > 1}
+    return Sweep(points, reported, len(sweeps) - len(whole), spread, {key: len(v) for key, v in plays.items()})

@@ -8,7 +8,7 @@ from typing import Any
 from . import model, sweep, symbols
 from .analysis import break_text, sweeps
 from .budget import Budget, Verdict
-from .document import Table, Text
+from .document import Table, Text, fmt
 from .model import Results
 
 #: Symbols shown per variant and kind in the report's size diff (largest changes)
@@ -189,8 +189,11 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
         for v in names:
             at = {p.rate_group: p for p in found[v].points if p.axis == axis and p.level == load}
             point = at.get(fastest)
+            spread = found[v].spread.get((axis, load, fastest))
             row += [point.latency_p99 * 1e6 / cycles_hz if point else "",
-                    point.latency_max * 1e6 / cycles_hz if point else "",
+                    (f"{fmt(point.latency_max * 1e6 / cycles_hz)} ({fmt(spread[0] * 1e6 / cycles_hz)}–"
+                     f"{fmt(spread[1] * 1e6 / cycles_hz)})" if point and spread else
+                     point.latency_max * 1e6 / cycles_hz if point else ""),
                     ", ".join(rg for rg, p in at.items() if p.missed) or "-"]
             if v in shedding:
                 row.append(point.shed if point else "")
@@ -198,33 +201,12 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
     unit = found[names[0]].unit(axis)
     columns = [f"load ({'µs' if unit == 'us' else unit})"]
     for v in names:
-        columns += [f"{v} {fastest} p99 (µs)", f"{v} {fastest} max (µs)", f"{v} missed deadlines"]
+        plays = found[v].repeats(axis)
+        columns += [f"{v} {fastest} p99 (µs)" + (f", median of {plays} plays" if plays > 1 else ""),
+                    f"{v} {fastest} max (µs)" + (" (spread)" if plays > 1 else ""), f"{v} missed deadlines"]
         if v in shedding:
             columns.append(f"{v} load dropped")
     return Table(f"Load sweep, axis '{axis}'", columns, rows)
-
-
-def serial_link_table(data: Results) -> Table | None:
-    """The serial-load sweep's traffic: what each level offered the link and
-    what got through, per variant (SERIAL records, kittools.serial_sweep)."""
-    names = data.names()
-    found = {v: {(r["axis"], int(r["level"])): r for r in data.variants[v].of_kind("SERIAL")} for v in names}
-    keys = sorted({k for v in names for k in found[v]}, key=lambda k: (k[0] != "uplink", k[1]))
-    if not keys:
-        return None
-    rows: list[list[Any]] = []
-    for axis, level in keys:
-        row: list[Any] = [axis, level]
-        for v in names:
-            record = found[v].get((axis, level))
-            row += [f"{record['delivered']} of {record['offered']}" if record else "",
-                    record["lost"] if record else ""]
-        rows.append(row)
-    columns = ["axis", "level (cmd/s, pkt/s)"]
-    for v in names:
-        columns += [f"{v} delivered", f"{v} lost"]
-    return Table("Serial load: what the link delivered (uplink: commands the link passed to the dispatcher; "
-                 "downlink: packets the ground received, by their numbers)", columns, rows)
 
 
 def boards_table(datas: list[Results]) -> Table:

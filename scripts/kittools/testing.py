@@ -23,6 +23,7 @@ from . import (
     budget,
     console,
     device,
+    flood,
     floor,
     footprint,
     fuzz,
@@ -501,6 +502,7 @@ def raw_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
     logs = results.integration_logs(log_dir, platform, build.name)
     tally = foreign_dictionary_build(build, name, logs)
     tally.add(fuzz_build(build, name, logs))
+    tally.add(flood_build(build, name, logs))
     return tally
 
 
@@ -582,6 +584,24 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
           f"{dict(sorted(outcome.sent.items()))}, {outcome.noops_answered}/{outcome.noops_sent} NO_OPs answered, "
           f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
           f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}", flush=True)
+    return Tally(failed=1) if failures else Tally(passed=1)
+
+
+def flood_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and flood its link (kittools.flood); the records
+    go to flood.json, where the board's results take them."""
+    started = time.monotonic()
+    try:
+        outcome = flood.run(build)
+    except KitError as error:
+        print(f"[kit]   {name}: flood: FAIL: {error}", flush=True)
+        return Tally(failed=1)
+    (logs / results.FLOOD_FILE).write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
+    failures = outcome.failures()
+    slips = {line.split(" rg=")[1].split()[0]: line.split(" slips=")[1].split()[0] for line in outcome.sweep_lines}
+    print(f"[kit]   {name}: flood ({outcome.seconds:.1f} s at {outcome.baud} baud): {outcome.record()}, slips "
+          f"{slips} ({time.monotonic() - started:.0f} s): {'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}",
+          flush=True)
     return Tally(failed=1) if failures else Tally(passed=1)
 
 

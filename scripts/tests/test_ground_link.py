@@ -44,7 +44,7 @@ def test_invalid_frames_are_invalid_and_seeded():
             packets, _, _ = FpFramerDeframer().deframe_all(data + fuzz.PADDING, no_copy=False)
             assert packets == [], f"{kind} frame {data.hex()} deframed"
             if kind == "garbage":
-                assert not set(data) & fuzz.START_WORD_BYTES
+                assert not set(data) & link_client.START_WORD_BYTES
             if kind in ("oversized", "length_wraps"):
                 (length,) = link_client.HEADER.unpack_from(data)[1:]
                 assert length + 12 > DEPLOYMENT.accumulator_size
@@ -77,7 +77,8 @@ def test_outcome_names_every_shortfall():
     outcome.sent["oversized"] = 1
     outcome.telemetry = {"Kit.linkHealth.FramesDetected": 2, "Kit.linkHealth.Oversized": 1,
                          "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 0,
-                         "Kit.linkHealth.CommandsDropped": 0}
+                         "Kit.linkHealth.CommandsDropped": 0, "Kit.linkHealth.UartRingDrops": 0,
+                         "Kit.linkHealth.UartBytesReceived": 0}
     failures = outcome.failures()
     assert any("NO_OPs answered: 1, expected 2" in f for f in failures)
     assert any("asserted or halted" in f and "FrameAccumulator.cpp:123" in f for f in failures)
@@ -87,7 +88,8 @@ def test_outcome_names_every_shortfall():
 
 def test_bad_commands_count_from_the_dispatchers_events_in_either_form():
     healthy = {"Kit.linkHealth.FramesDetected": 3, "Kit.linkHealth.Oversized": 0,
-               "Kit.linkHealth.UnknownPackets": 0, "Kit.linkHealth.CommandsDropped": 0}
+               "Kit.linkHealth.UnknownPackets": 0, "Kit.linkHealth.CommandsDropped": 0,
+               "Kit.linkHealth.UartRingDrops": 0, "Kit.linkHealth.UartBytesReceived": 0}
     # The passive dispatcher has no CommandErrors channel: its events alone count
     passive = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1, dispatcher_telemetry=False)
     passive.sent.update({"bad_opcode": 1, "bad_arguments": 1})

@@ -162,7 +162,8 @@ def test_a_serial_axis_is_reported_in_its_own_unit(tmp_path):
               f"expected=1000 slips={5 if rate >= 200 and rg == 'rg1kHz' else 0} late_starts=0 latency_p99=720 "
               "latency_max=900 jitter_p99=12 jitter_max=24 exec_max=200 load_runs=100 load_dropped=0"
               for point, rate in enumerate((0, 100, 200)) for rg, hz in (("rg1kHz", 1000), ("rg100Hz", 100))]
-    uplink.append("KIT SERIAL axis=uplink point=2 level=200 offered=300 delivered=290 lost=10 receive_overruns=0")
+    uplink.append("KIT SERIAL axis=uplink point=2 level=200 repeat=0 offered=300 delivered=290 lost=10 "
+                  "bytes_sent=5400 uart_received=5400 ring_drops=180 uart_errors=0")
     for variant in ("baremetal", "rtos"):
         data.variants[variant].records += [{"kind": r.kind, **r.fields} for line in uplink
                                            if (r := console.parse_line(line)) is not None]
@@ -174,9 +175,46 @@ def test_a_serial_axis_is_reported_in_its_own_unit(tmp_path):
     assert "| uplink | rg1kHz | 200 cmd/s | 200 cmd/s |" in markdown
     assert "| uplink | rg100Hz | none up to 200 cmd/s | none up to 200 cmd/s |" in markdown
     assert "| load (cmd/s) |" in markdown
-    assert "| uplink | 200 | 290 of 300 | 10 | 290 of 300 | 10 |" in markdown
+    assert "| uplink | 200 | 290 of 300 | 180 | 290 of 300 | 180 |" in markdown
+    assert "| uplink | 200 cmd/s | 200 cmd/s |" in markdown  # where delivery breaks
     lines = analysis.sweep_guidance(data, analysis.sweeps(data)).lines
     assert "rtos, uplink load: rg1kHz misses deadlines from 200 cmd/s." in lines
+
+
+def test_a_serial_level_played_three_times_is_its_median_with_the_spread(tmp_path):
+    """Host-timed input: each play of a serial level has its own latencies.
+    The report gives the median play and the spread; a level breaks when
+    most plays missed; delivery is shown play by play."""
+    data = results()
+    lines = ["KIT LINE baud=115200 bytes_per_s=11520"]
+    for play, (latency_max, slips, lost) in enumerate(((1200, 0, 0), (3600, 1, 2), (2400, 0, 0))):
+        lines += [f"KIT SWEEP axis=noise point={play} level=75 unit=% burst=0 rg={rg} hz={hz} cycles=1000 "
+                  f"expected=1000 slips={slips if rg == 'rg1kHz' else 0} late_starts=0 latency_p99=720 "
+                  f"latency_max={latency_max} jitter_p99=12 jitter_max=24 exec_max=200 load_runs=0 load_dropped=0"
+                  for rg, hz in (("rg1kHz", 1000), ("rg100Hz", 100))]
+        lines.append(f"KIT SERIAL axis=noise point={play} level=75 repeat={play} offered=48 delivered={48 - lost} "
+                     f"lost={lost} bytes_sent=10618 uart_received=10618 ring_drops={300 * lost} uart_errors=0")
+    lines += ["KIT FLOOD baud=115200 seconds=10.20 received_per_s=6826 bytes_sent=117792 uart_received=117792 "
+              "ring_drops=9048 uart_errors=0 discarded=108350 bad_checksums=0 oversized=0 frame_bytes=394 "
+              "unaccounted=0 noops_sent=20 noops_answered=20",
+              "KIT FLOODRG axis=noise point=9000 level=100 unit=% burst=0 rg=rg1kHz hz=1000 cycles=10000 "
+              "expected=10000 slips=3 late_starts=0 latency_p99=6655 latency_max=12000 jitter_p99=1 jitter_max=2"]
+    for variant in ("baremetal", "rtos"):
+        data.variants[variant].records += [{"kind": r.kind, **r.fields} for line in lines
+                                           if (r := console.parse_line(line)) is not None]
+    parsed = sweep.of_records(data.variants["rtos"].records)
+    assert parsed is not None and parsed.repeats("noise") == 3
+    assert parsed.spread[("noise", 75, "rg1kHz")] == (1200, 3600)
+    assert parsed.series("noise", "rg1kHz")[0].latency_max == 2400  # the median play
+    assert parsed.breaking_point("noise", "rg1kHz") is None  # one play of three missed
+    report.write(data, tmp_path)
+    markdown = (tmp_path / "report.md").read_text()
+    assert "115,200 baud (11,520 B/s)" in markdown
+    assert "| noise | 75 | 48/46/48 of 48 | 0/600/0 |" in markdown
+    assert "| noise | none lost | none lost |" in markdown  # most plays lost nothing
+    assert "max (µs) (spread)" in markdown and "| 200 (100–300) |" in markdown  # cycles at 12 MHz
+    assert "| rg1kHz slips | 3 | 3 |" in markdown
+    assert "| NO_OPs after the flood answered | 20 | 20 |" in markdown
 
 
 def test_an_axis_one_variant_did_not_run_says_so(tmp_path):

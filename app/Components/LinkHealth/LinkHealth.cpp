@@ -13,14 +13,17 @@ LinkHealth::LinkHealth(const char* const compName)
       m_unknownPackets(0),
       m_inFlight(0),
       m_commandsDropped(0),
-      m_inFlightLimit(0) {}
+      m_inFlightLimit(0),
+      m_uartCounts(nullptr) {}
 
 LinkHealth::~LinkHealth() {}
 
-void LinkHealth::configure(FwSizeType accumulatorSize, U32 commandsInFlight) {
+void LinkHealth::configure(FwSizeType accumulatorSize, U32 commandsInFlight, UartCountsSource uartCounts) {
     FW_ASSERT(commandsInFlight > 0);
+    FW_ASSERT(uartCounts != nullptr);
     m_detector.setCapacity(accumulatorSize);
     m_inFlightLimit = commandsInFlight;
+    m_uartCounts = uartCounts;
 }
 
 void LinkHealth::schedIn_handler(FwIndexType portNum, U32 context) {
@@ -33,6 +36,14 @@ void LinkHealth::schedIn_handler(FwIndexType portNum, U32 context) {
     tlmWrite_Oversized(counts.oversized);
     tlmWrite_UnknownPackets(m_unknownPackets);
     tlmWrite_CommandsDropped(m_commandsDropped.load());
+    FW_ASSERT(m_uartCounts != nullptr);  // configure() first
+    const UartCounts uart = m_uartCounts();
+    tlmWrite_UartBytesReceived(uart.received);
+    tlmWrite_UartRingDrops(uart.ringDrops);
+    tlmWrite_UartOverruns(uart.overruns);
+    tlmWrite_UartParityErrors(uart.parity);
+    tlmWrite_UartFramingErrors(uart.framing);
+    tlmWrite_UartBreaks(uart.breaks);
 }
 
 void LinkHealth::commandIn_handler(FwIndexType portNum, Fw::ComBuffer& data, U32 context) {

@@ -66,5 +66,25 @@ module Kit {
 
         @ Ground commands dropped because the dispatcher had the limit in flight
         telemetry CommandsDropped: U32 id 5
+
+        @ Bytes the link UART's receive interrupt read (under QEMU: every byte
+        @ the ground wrote; QEMU holds back what the UART cannot take)
+        telemetry UartBytesReceived: U32 id 6
+
+        @ Of those, bytes the UART driver's receive ring had no room for:
+        @ lost before any frame detection (the ring drains 64 bytes per
+        @ 100 Hz poll)
+        telemetry UartRingDrops: U32 id 7
+
+        @ Receive errors the UART reported, by kind (Zephyr's uart_err_check;
+        @ zero where the board's driver does not report them: the LINK
+        @ console line says which). Written on change: rare by nature.
+        telemetry UartOverruns: U32 id 8 update on change
+
+        telemetry UartParityErrors: U32 id 9 update on change
+
+        telemetry UartFramingErrors: U32 id 10 update on change
+
+        telemetry UartBreaks: U32 id 11 update on change
     }
 }

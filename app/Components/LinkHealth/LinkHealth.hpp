@@ -15,12 +15,26 @@ namespace Kit {
 
 class LinkHealth final : public LinkHealthComponentBase {
   public:
+    //! What the link UART's receive interrupt counted (its driver's counts)
+    struct UartCounts {
+        U32 received;   //!< bytes read from the UART
+        U32 ringDrops;  //!< of those, bytes the driver's receive ring dropped
+        U32 overruns;   //!< receive errors the UART reported, by kind
+        U32 parity;
+        U32 framing;
+        U32 breaks;
+    };
+    //! Reads the link UART's counts (the topology knows the driver; this
+    //! component does not, so that its unit test needs no UART)
+    using UartCountsSource = UartCounts (*)();
+
     explicit LinkHealth(const char* const compName);
     ~LinkHealth();
 
     //! \param accumulatorSize the FrameAccumulator's ring size
     //! \param commandsInFlight ground commands the dispatcher may hold at once
-    void configure(FwSizeType accumulatorSize, U32 commandsInFlight);
+    //! \param uartCounts the link UART's receive counts
+    void configure(FwSizeType accumulatorSize, U32 commandsInFlight, UartCountsSource uartCounts);
 
     //! The detector the FrameAccumulator is configured with
     const Svc::FrameDetector& detector() const { return m_detector; }
@@ -44,6 +58,7 @@ class LinkHealth final : public LinkHealthComponentBase {
     std::atomic<U32> m_inFlight;
     std::atomic<U32> m_commandsDropped;
     U32 m_inFlightLimit;
+    UartCountsSource m_uartCounts;
 };
 
 }  // namespace Kit

@@ -7,6 +7,7 @@ module Kit {
     enum SegmentAxis {
         UPLINK = 0 @< commands from the ground, in commands per second
         DOWNLINK = 1 @< extra downlink packets (Load.SET_DOWNLINK), in packets per second
+        NOISE = 2 @< random bytes up the link, in percent of its line rate
     }
 
     @ Why a segment was not measured

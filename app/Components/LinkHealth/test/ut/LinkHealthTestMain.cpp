@@ -17,6 +17,11 @@ TEST(LinkHealth, UnknownPacketsAreCountedAndReturned) {
     tester.unknownPacketsAreCountedAndReturned();
 }
 
+TEST(LinkHealth, UartCountsBecomeTelemetry) {
+    Kit::LinkHealthTester tester;
+    tester.uartCountsBecomeTelemetry();
+}
+
 TEST(LinkHealth, DetectorCountsEveryOutcomeByReason) {
     Kit::LinkHealthTester tester;
     tester.detectorCountsEveryOutcomeByReason();

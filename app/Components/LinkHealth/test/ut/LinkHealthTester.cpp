@@ -36,6 +36,12 @@ void fprimeFrame(U8 (&frame)[FRAME_SIZE], U32 lengthField) {
     putBigEndian(&frame[HEADER_SIZE + PAYLOAD_SIZE], crc.asBigEndianU32());
 }
 
+//! The link UART's counts as the test sets them (the topology reads the driver's)
+LinkHealth::UartCounts s_uartCounts = {};
+LinkHealth::UartCounts uartCounts() {
+    return s_uartCounts;
+}
+
 //! What the detector answers for these bytes at the front of a ring
 Svc::FrameDetector::Status detectIn(const CountingFrameDetector& detector,
                                     const U8* bytes,
@@ -52,7 +58,8 @@ LinkHealthTester::LinkHealthTester()
     : LinkHealthGTestBase("LinkHealthTester", MAX_HISTORY_SIZE), component("LinkHealth") {
     this->initComponents();
     this->connectPorts();
-    this->component.configure(ACCUMULATOR_SIZE, IN_FLIGHT);
+    s_uartCounts = {};
+    this->component.configure(ACCUMULATOR_SIZE, IN_FLIGHT, uartCounts);
 }
 
 LinkHealthTester::~LinkHealthTester() {}
@@ -114,6 +121,25 @@ void LinkHealthTester::unknownPacketsAreCountedAndReturned() {
     EXPECT_EQ(this->fromPortHistory_unknownReturnOut->at(0).fwBuffer.getData(), data);
     this->invoke_to_schedIn(0, 0);
     ASSERT_TLM_UnknownPackets(0, 2);
+}
+
+void LinkHealthTester::uartCountsBecomeTelemetry() {
+    s_uartCounts = {1000, 40, 3, 2, 1, 5};
+    this->invoke_to_schedIn(0, 0);
+    ASSERT_TLM_UartBytesReceived(0, 1000);
+    ASSERT_TLM_UartRingDrops(0, 40);
+    ASSERT_TLM_UartOverruns(0, 3);
+    ASSERT_TLM_UartParityErrors(0, 2);
+    ASSERT_TLM_UartFramingErrors(0, 1);
+    ASSERT_TLM_UartBreaks(0, 5);
+    // The error kinds are written on change: a second call with the same
+    // errors sends the byte counts again and no error count
+    this->clearHistory();
+    s_uartCounts.received = 1500;
+    this->invoke_to_schedIn(0, 0);
+    ASSERT_TLM_UartBytesReceived(0, 1500);
+    ASSERT_TLM_UartOverruns_SIZE(0);
+    ASSERT_TLM_UartBreaks_SIZE(0);
 }
 
 void LinkHealthTester::detectorCountsEveryOutcomeByReason() {

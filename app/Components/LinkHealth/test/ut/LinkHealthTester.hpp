@@ -21,6 +21,7 @@ class LinkHealthTester : public LinkHealthGTestBase {
     void commandsBeyondTheLimitAreDroppedAndCounted();
     void anAnswerFreesASlotAndGoesBackToTheRouter();
     void unknownPacketsAreCountedAndReturned();
+    void uartCountsBecomeTelemetry();
     void detectorCountsEveryOutcomeByReason();
     void aLengthThatWrapsTheFrameSizeIsOversized();
 

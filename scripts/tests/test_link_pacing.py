@@ -1,0 +1,108 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The link's line rate and byte accounting without QEMU: what the serial
+sweep and the flood offer per point, and how they account for every byte."""
+
+from __future__ import annotations
+
+import pytest
+
+from kittools import flood, link_client, serial_sweep
+from kittools.link_client import START_WORD_BYTES, bytes_per_second, line_rate
+from kittools.serial_sweep import LinkCounts, Offer, PointTraffic, traffic_time
+from kittools.workspace import KitError
+
+NOOP = bytes(18)
+
+
+def test_the_line_rate_comes_from_the_link_line():
+    assert line_rate("KIT LINK ready uart=uart@4000d000 baud=115200 uart_errors=unsupported dictionary=ab") == 115200
+    assert bytes_per_second(115200) == 11520
+    with pytest.raises(KitError, match="no line rate"):
+        line_rate("KIT LINK ready uart=uart@4000d000 dictionary=ab")
+
+
+def test_noise_frames_nothing():
+    import random
+
+    data = link_client.noise(random.Random(1), 10_000)
+    assert len(data) == 10_000 and not set(data) & START_WORD_BYTES
+
+
+def play(offer: Offer, steps: list[float]) -> tuple[PointTraffic, bytes]:
+    traffic = PointTraffic("noise", 0, 50)
+    sent = b""
+    for elapsed in steps:
+        sent += offer.due(elapsed, traffic)
+    return traffic, sent
+
+
+def test_a_point_offers_the_same_traffic_whatever_the_host_timing():
+    """Two hosts see the deployment's clock at different moments: the same
+    bytes go up, only in other chunks."""
+    coarse = [i * 0.1 for i in range(30)]
+    fine = [i * 0.003 for i in range(1000)]
+    a_traffic, a_bytes = play(Offer(NOOP, 40, 5000, seed=7), coarse)
+    b_traffic, b_bytes = play(Offer(NOOP, 40, 5000, seed=7), fine)
+    assert a_traffic.commands_sent == b_traffic.commands_sent == int(40 * serial_sweep.POINT_S)
+    assert len(a_bytes) == len(b_bytes) == a_traffic.commands_sent * len(NOOP) + int(5000 * serial_sweep.POINT_S)
+
+
+def test_an_offer_is_complete_only_when_all_its_traffic_went():
+    offer = Offer(NOOP, 10, 1000)
+    traffic = PointTraffic("noise", 0, 50)
+    offer.due(0.5, traffic)
+    assert not offer.complete(traffic)
+    for step in range(1, 200):  # the offer writes WRITE_MAX bytes at most a call
+        offer.due(serial_sweep.POINT_S + step, traffic)
+    assert offer.complete(traffic)
+
+
+def test_the_quiet_before_a_request_is_skipped_not_made_up():
+    quiet_from = serial_sweep.SETTLE_S - serial_sweep.REQUEST_QUIET_S
+    assert traffic_time(quiet_from / 2) == quiet_from / 2
+    assert traffic_time(quiet_from + serial_sweep.REQUEST_QUIET_S / 2) == pytest.approx(quiet_from)
+    assert traffic_time(serial_sweep.SETTLE_S + 1) == pytest.approx(quiet_from + 1)
+
+
+def test_at_full_noise_the_noops_and_the_noise_fill_the_line():
+    per_s = serial_sweep.noise_per_second(115200, NOOP, 100) + serial_sweep.NOISE_NOOP_RATE * len(NOOP)
+    assert per_s == pytest.approx(11520)
+    assert serial_sweep.noise_per_second(115200, NOOP, 0) == 0
+    assert serial_sweep.full_line_commands(115200, NOOP) == 640
+
+
+def test_link_counts_are_deltas_and_positions_count_each_decision():
+    before = LinkCounts(frames_detected=2, uart_received=100, ring_drops=0, bytes_discarded=10)
+    after = LinkCounts(frames_detected=5, uart_received=400, ring_drops=50, bytes_discarded=196, bad_checksums=1)
+    got = after.since(before)
+    assert got.uart_received == 300 and got.ring_drops == 50
+    # Three whole frames of 18 bytes, and one position per other decision
+    assert got.positions(18) == 3 * 18 + 186 + 1
+
+
+def test_link_counts_read_the_error_kinds_together():
+    class Link:
+        telemetry = {"Kit.linkHealth.UartBytesReceived": 7, "Kit.linkHealth.UartOverruns": 2,
+                     "Kit.linkHealth.UartFramingErrors": 1}
+
+    counts = LinkCounts.of(Link())  # type: ignore[arg-type]
+    assert counts.uart_received == 7 and counts.uart_errors == 3 and counts.frames_detected == 0
+
+
+def test_a_flood_accounts_for_every_byte_or_says_which_are_missing():
+    counts = LinkCounts(frames_detected=21, uart_received=1000, ring_drops=100, bytes_discarded=1000 - 100 - 394)
+    outcome = flood.Outcome(baud=115200, bytes_sent=1000, noops_sent=20, noops_answered=20, counts=counts,
+                            frame_bytes=394, sweep_lines=["a", "b", "c"])
+    assert outcome.unaccounted() == 0 and outcome.failures() == []
+    assert "unaccounted=0" in outcome.record()
+    short = flood.Outcome(baud=115200, bytes_sent=1200, noops_sent=20, noops_answered=19,
+                          counts=LinkCounts(uart_received=1000, ring_drops=100, bytes_discarded=500),
+                          frame_bytes=394, halt="ASSERT x")
+    failures = short.failures()
+    assert any("19 of 20" in f for f in failures)
+    assert any("1000 bytes of the 1200" in f for f in failures)
+    assert any("not decided on" in f for f in failures)
+    assert any("asserted or halted" in f for f in failures)
+    assert any("no SWEEP lines" in f for f in failures)
+    # Its segment's lines are not a point of the noise axis
+    assert all(not line.startswith("KIT SWEEP") for line in outcome.to_json()["lines"])
