@@ -2,17 +2,20 @@
 """The budget gate: a board's results against its baseline.
 
 ROM or static RAM more than +2%, a p99 more than +10% and over 2 µs, the
-fastest rate group's latency over its kernel floor more than +10%, or any
-new slip fails it (the limits are options). It decides from the metrics
-alone: no report is rendered, and no plotting or templating library is
-imported here or by what it imports.
+fastest rate group's latency over its kernel floor more than +10%, any new
+slip, or a breaking point that comes earlier (a rate group's on any load or
+serial axis, the link's delivery on its command axes) fails it (the limits
+are options). It decides from the metrics and the sweep records alone (the
+serial axes' latencies, host-timed, are not held: their breaking points and
+deliveries are): no report is rendered, and no plotting or templating
+library is imported here or by what it imports.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from . import model, symbols
+from . import link_report, model, sweep, symbols
 from .model import MetricId, Results
 
 
@@ -109,6 +112,7 @@ def check(data: Results, baseline: Results, budget: Budget | None = None) -> Ver
                     verdict.over_size.add(name)
             if now != before or why:
                 verdict.changes.append(Change(name, metric, before, now, why))
+        verdict.violations += [f"{name} {v}" for v in earlier_breaks(data.variants[name], old)]
         # Which symbols moved: both tables floored alike (kittools.symbols)
         for kind in symbols.KINDS:
             table_now, table_before = data.variants[name].symbols.get(kind), old.symbols.get(kind)
@@ -117,3 +121,34 @@ def check(data: Results, baseline: Results, budget: Budget | None = None) -> Ver
                 if sizes.changed:
                     verdict.sizes.append((name, sizes))
     return verdict
+
+
+def breaking_points(variant: model.Variant) -> dict[str, int | None]:
+    """Every breaking point a variant's records give: each rate group's on
+    each sweep axis (the median play of a serial level), and the link's
+    delivery on each command axis. None: it held through the sweep."""
+    found: dict[str, int | None] = {}
+    parsed = sweep.of_records(variant.records)
+    if parsed is not None:
+        for axis in parsed.axes():
+            for rg in parsed.rate_groups():
+                found[f"{axis} load, {rg}"] = parsed.breaking_point(axis, rg)
+    plays = link_report.serial_plays(variant)
+    for axis in link_report.COMMAND_AXES:
+        if any(key[0] == axis for key in plays):
+            found[f"{axis} delivery"] = link_report.delivery_breaking_point(plays, axis)
+    return found
+
+
+def earlier_breaks(now: model.Variant, before: model.Variant) -> list[str]:
+    """Where a breaking point comes at a lower level than in the baseline."""
+    found = []
+    old = breaking_points(before)
+    for name, level in breaking_points(now).items():
+        if name not in old or level is None:
+            continue
+        was = old[name]
+        if was is None or level < was:
+            said = "held through the sweep" if was is None else f"broke at {was}"
+            found.append(f"breaking point, {name}: {level}, earlier than the baseline ({said})")
+    return found

@@ -298,14 +298,20 @@ def cmd_serial_sweep(args: argparse.Namespace) -> int:
     out = logs / results.SERIAL_SWEEP_FILE
     out.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
     found = outcome.sweep()
+    levels: dict[tuple[str, int], list[serial_sweep.PointTraffic]] = {}
     for traffic in outcome.traffic:
+        levels.setdefault((traffic.axis, traffic.level), []).append(traffic)
+    for (axis, level), plays in levels.items():
         if found is None:
             break
-        at = {p.rate_group: p for p in found.points if p.axis == traffic.axis and p.level == traffic.level}
-        latency = ", ".join(f"{rg} p99/max {p.latency_p99}/{p.latency_max} cycles{' MISSED' if p.missed else ''}"
+        at = {p.rate_group: p for p in found.points if p.axis == axis and p.level == level}
+        spread = {rg: "-".join(map(str, found.spread.get((axis, level, rg), ()))) for rg in at}
+        latency = ", ".join(f"{rg} p99/max {p.latency_p99}/{p.latency_max}"
+                            f"{f' (max {spread[rg]})' if spread[rg] else ''} cycles{' MISSED' if p.missed else ''}"
                             for rg, p in at.items())
-        print(f"{traffic.axis} {sweep.level_text(traffic.level, found.unit(traffic.axis))}: {latency}; "
-              f"delivered {traffic.delivered()} of {traffic.offered()}")
+        print(f"{axis} {sweep.level_text(level, found.unit(axis))}: {latency} (median of {len(plays)} plays); "
+              f"delivered {'/'.join(str(t.delivered()) for t in plays)} of {plays[0].offered()}, ring drops "
+              f"{'/'.join(str(t.ring_drops) for t in plays)} B")
     _say(f"records: {out}")
     return 0
 

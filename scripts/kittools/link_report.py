@@ -10,18 +10,22 @@ import statistics
 from typing import Any
 
 from .document import Table, Text, fmt
-from .model import Results
+from .model import Results, Variant
 
 #: Axes whose delivery is NO_OPs the link passed to the dispatcher
 COMMAND_AXES = ("uplink", "noise")
 
 
-def _plays(data: Results, variant: str) -> dict[tuple[str, int], list[dict[str, Any]]]:
-    """SERIAL records by (axis, level), every play of the level."""
+def serial_plays(variant: Variant) -> dict[tuple[str, int], list[dict[str, Any]]]:
+    """A variant's SERIAL records by (axis, level), every play of the level."""
     found: dict[tuple[str, int], list[dict[str, Any]]] = {}
-    for record in data.variants[variant].of_kind("SERIAL"):
+    for record in variant.of_kind("SERIAL"):
         found.setdefault((str(record["axis"]), int(record["level"])), []).append(record)
     return found
+
+
+def _plays(data: Results, variant: str) -> dict[tuple[str, int], list[dict[str, Any]]]:
+    return serial_plays(data.variants[variant])
 
 
 def line_text(data: Results) -> Text | None:

@@ -112,3 +112,29 @@ def test_a_board_only_built_is_reported_without_runs_verdicts_or_times(tmp_path)
     # Beside the emulated boards: its ROM and RAM, no timing
     report.write_boards([_results(), data], tmp_path / "boards")
     assert "nucleo_f401re/stm32f401xe rtos" in (tmp_path / "boards" / "report.md").read_text()
+
+
+def _serial(axis: str, level: int, lost: int, latency_max: int, slips: int = 0) -> list[dict[str, str]]:
+    lines = [f"KIT SWEEP axis={axis} point=0 level={level} unit=% burst=0 rg=rg1kHz hz=1000 cycles=1000 "
+             f"expected=1000 slips={slips} late_starts=0 latency_p99=700 latency_max={latency_max} jitter_p99=1 "
+             "jitter_max=2",
+             f"KIT SERIAL axis={axis} point=0 level={level} repeat=0 offered=48 delivered={48 - lost} lost={lost} "
+             "bytes_sent=1 uart_received=1 ring_drops=0 uart_errors=0"]
+    return [{"kind": r.kind, **r.fields} for line in lines if (r := console.parse_line(line)) is not None]
+
+
+def test_the_budget_holds_breaking_points_not_serial_latencies():
+    """A serial level's latencies are host-timed and not held; where a group
+    or the link's delivery breaks is, and breaking earlier fails."""
+    baseline = _results()
+    baseline.variants["rtos"].records += _serial("noise", 50, 0, 900) + _serial("noise", 75, 2, 900)
+    slower = copy.deepcopy(baseline)
+    slower.variants["rtos"].records = [r for r in slower.variants["rtos"].records if r.get("axis") != "noise"]
+    slower.variants["rtos"].records += _serial("noise", 50, 0, 5000) + _serial("noise", 75, 2, 5000)
+    assert budget.check(slower, baseline).passed
+    earlier = copy.deepcopy(baseline)
+    earlier.variants["rtos"].records = [r for r in earlier.variants["rtos"].records if r.get("axis") != "noise"]
+    earlier.variants["rtos"].records += _serial("noise", 50, 1, 900, slips=2) + _serial("noise", 75, 2, 900)
+    violations = budget.check(earlier, baseline).violations
+    assert any("noise delivery: 50, earlier than the baseline (broke at 75)" in v for v in violations)
+    assert any("noise load, rg1kHz: 50, earlier than the baseline (held through the sweep)" in v for v in violations)
