@@ -433,13 +433,13 @@ def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
 INTEGRATION = KIT_ROOT / "tests" / "integration"
 
 
-# The checks through fprime-gds and the serial-load sweep run one build at a
-# time: the integration API's time-outs are the host's (two stations at once
-# once missed a first NO_OP's 10 s), and the sweep paces its uplink by what
-# the host sees. Fuzzing and the foreign dictionary wait for the
-# deployment's answers, however long the host takes: two builds at a time,
-# one QEMU per core (fuzzing's pace is the deployment's uplink, 64 bytes per
-# 100 Hz poll of the link UART, not the host's CPU).
+# The checks through fprime-gds run one build at a time: the integration
+# API's time-outs are the host's (two stations at once once missed a first
+# NO_OP's 10 s). Fuzzing, the flood, the serial-load sweep and the foreign
+# dictionary wait for the deployment's answers and pace on its own clock,
+# however long the host takes: two builds at a time, one QEMU per core (the
+# sweep's latencies are host-timed anyway: played three times, median and
+# spread; what it offers and delivers does not depend on the host).
 INTEGRATION_JOBS = 1
 RAW_LINK_JOBS = 2
 
@@ -448,9 +448,9 @@ def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: 
     """The ground-link checks of every build of the suite, each booted under
     QEMU into its ground scenario: first tests/integration (F´'s
     integration-test API, through fprime-gds's pytest plugin, with
-    fprime-gds on the build's link: kittools.ground) and the serial-load
-    sweep, `jobs` builds at a time; then the foreign dictionary and uplink
-    fuzzing, `raw_link_jobs` builds at a time. Two builds never share a QEMU
+    fprime-gds on the build's link: kittools.ground), `jobs` builds at a
+    time; then the foreign dictionary, uplink fuzzing, the flood and the
+    serial-load sweep, `raw_link_jobs` builds at a time. Two builds never share a QEMU
     pipe, a link socket or a GDS transport (each station's is its own). The
     kit's own runner, not twister's pytest harness: that harness owns one
     console and knows nothing of a second serial port or a GDS."""
@@ -472,9 +472,8 @@ def _ground_name(platform: str, build: Path) -> str:
 
 
 def station_checks(platform: str, build: Path, log_dir: Path) -> Tally:
-    """One build's checks that need the host to themselves, one after the
-    other (they share its QEMU pipe and link socket): the integration suite
-    through fprime-gds, then the serial-load sweep."""
+    """One build's check that needs the host to itself: the integration
+    suite through fprime-gds."""
     name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
     xml = logs / "pytest.xml"
@@ -490,19 +489,19 @@ def station_checks(platform: str, build: Path, log_dir: Path) -> Tally:
     tally = junit_tally(xml)
     print(f"[kit]   {name}: {tally.passed} passed, {tally.failed} failed "
           f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
-    tally.add(serial_sweep_build(build, name, logs))
     return tally
 
 
 def raw_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
     """One build's checks on the raw link, paced by the deployment's own
-    answers, one after the other: another build's dictionary refused, then
-    uplink fuzzing."""
+    answers and clock, one after the other (they share its QEMU pipe and
+    link socket): another build's dictionary refused, uplink fuzzing, the
+    flood, the serial-load sweep."""
     name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
     tally = foreign_dictionary_build(build, name, logs)
-    tally.add(fuzz_build(build, name, logs))
-    tally.add(flood_build(build, name, logs))
+    for check in (fuzz_build, flood_build, serial_sweep_build):
+        tally.add(check(build, name, logs))
     return tally
 
 
