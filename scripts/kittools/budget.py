@@ -123,32 +123,35 @@ def check(data: Results, baseline: Results, budget: Budget | None = None) -> Ver
     return verdict
 
 
-def breaking_points(variant: model.Variant) -> dict[str, int | None]:
-    """Every breaking point a variant's records give: each rate group's on
-    each sweep axis (the median play of a serial level), and the link's
-    delivery on each command axis. None: it held through the sweep."""
-    found: dict[str, int | None] = {}
+def breaking_points(variant: model.Variant) -> dict[str, tuple[int | None, int]]:
+    """Every breaking point a variant's records give, with the highest level
+    swept: each rate group's on each sweep axis (the median play of a serial
+    level), and the link's delivery on each command axis. None: it held
+    through the sweep."""
+    found: dict[str, tuple[int | None, int]] = {}
     parsed = sweep.of_records(variant.records)
     if parsed is not None:
         for axis in parsed.axes():
             for rg in parsed.rate_groups():
-                found[f"{axis} load, {rg}"] = parsed.breaking_point(axis, rg)
+                found[f"{axis} load, {rg}"] = (parsed.breaking_point(axis, rg), parsed.max_load(axis))
     plays = link_report.serial_plays(variant)
     for axis in link_report.COMMAND_AXES:
-        if any(key[0] == axis for key in plays):
-            found[f"{axis} delivery"] = link_report.delivery_breaking_point(plays, axis)
+        levels = [level for found_axis, level in plays if found_axis == axis]
+        if levels:
+            found[f"{axis} delivery"] = (link_report.delivery_breaking_point(plays, axis), max(levels))
     return found
 
 
 def earlier_breaks(now: model.Variant, before: model.Variant) -> list[str]:
-    """Where a breaking point comes at a lower level than in the baseline."""
+    """Where a breaking point comes at a lower level than in the baseline
+    (a level the baseline's sweep did not reach cannot be earlier)."""
     found = []
     old = breaking_points(before)
-    for name, level in breaking_points(now).items():
+    for name, (level, _) in breaking_points(now).items():
         if name not in old or level is None:
             continue
-        was = old[name]
-        if was is None or level < was:
-            said = "held through the sweep" if was is None else f"broke at {was}"
+        was, swept = old[name]
+        if (was is None and level <= swept) or (was is not None and level < was):
+            said = f"held through the sweep to {swept}" if was is None else f"broke at {was}"
             found.append(f"breaking point, {name}: {level}, earlier than the baseline ({said})")
     return found
