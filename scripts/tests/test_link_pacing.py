@@ -92,16 +92,18 @@ def test_link_counts_read_the_error_kinds_together():
 def test_a_flood_accounts_for_every_byte_or_says_which_are_missing():
     counts = LinkCounts(frames_detected=21, uart_received=1000, ring_drops=100, bytes_discarded=1000 - 100 - 394)
     outcome = flood.Outcome(baud=115200, bytes_sent=1000, noops_sent=20, noops_answered=20, counts=counts,
-                            frame_bytes=394, sweep_lines=["a", "b", "c"])
+                            request_bytes=34, noop_bytes=18, sweep_lines=["a", "b", "c"])
+    assert outcome.frame_bytes() == 394
     assert outcome.unaccounted() == 0 and outcome.failures() == []
     assert "unaccounted=0" in outcome.record()
     short = flood.Outcome(baud=115200, bytes_sent=1200, noops_sent=20, noops_answered=19,
-                          counts=LinkCounts(uart_received=1000, ring_drops=100, bytes_discarded=500),
-                          frame_bytes=394, halt="ASSERT x")
+                          counts=LinkCounts(frames_detected=20, uart_received=1000, ring_drops=100,
+                                            bytes_discarded=600),
+                          request_bytes=34, noop_bytes=18, halt="ASSERT x")
     failures = short.failures()
     assert any("19 of 20" in f for f in failures)
     assert any("1000 bytes of the 1200" in f for f in failures)
-    assert any("not decided on" in f for f in failures)
+    assert any("not decided on" in f for f in failures)  # more decided than kept
     assert any("asserted or halted" in f for f in failures)
     assert any("no SWEEP lines" in f for f in failures)
     # Its segment's lines are not a point of the noise axis
