@@ -17,7 +17,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol, TypeVar
 
 from . import (
     budget,
@@ -527,17 +527,34 @@ def foreign_dictionary_build(build: Path, name: str, logs: Path) -> Tally:
     return Tally(failed=1) if failure else Tally(passed=1)
 
 
+class _Recorded(Protocol):
+    def to_json(self) -> dict[str, Any]: ...
+
+
+_R = TypeVar("_R", bound=_Recorded)
+
+
+def _recorded(name: str, what: str, job: Callable[[], _R], path: Path) -> _R | None:
+    """Run a ground-link check and write its record; None (said) when it
+    could not run to its end."""
+    try:
+        outcome = job()
+    except KitError as error:
+        print(f"[kit]   {name}: {what}: FAIL: {error}", flush=True)
+        return None
+    path.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
+    return outcome
+
+
 def serial_sweep_build(build: Path, name: str, logs: Path) -> Tally:
     """Boot a ground build and run the serial-load sweep on its link
     (kittools.serial_sweep); the records go to serial.json beside the other
     logs, where the board's results (results.from_twister) take them."""
     started = time.monotonic()
-    try:
-        outcome = serial_sweep.run(build)
-    except KitError as error:
-        print(f"[kit]   {name}: serial-load sweep: FAIL: {error}", flush=True)
+    outcome = _recorded(name, "serial-load sweep", lambda: serial_sweep.run(build),
+                        logs / results.SERIAL_SWEEP_FILE)
+    if outcome is None:
         return Tally(failed=1)
-    (logs / results.SERIAL_SWEEP_FILE).write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
     found = outcome.sweep()
     breaks = {f"{axis} {rg}": sweep.level_text(found.breaking_point(axis, rg), found.unit(axis))
               for axis in found.axes() for rg in found.rate_groups()} if found else {}
@@ -590,12 +607,9 @@ def flood_build(build: Path, name: str, logs: Path) -> Tally:
     """Boot a ground build and flood its link (kittools.flood); the records
     go to flood.json, where the board's results take them."""
     started = time.monotonic()
-    try:
-        outcome = flood.run(build)
-    except KitError as error:
-        print(f"[kit]   {name}: flood: FAIL: {error}", flush=True)
+    outcome = _recorded(name, "flood", lambda: flood.run(build), logs / results.FLOOD_FILE)
+    if outcome is None:
         return Tally(failed=1)
-    (logs / results.FLOOD_FILE).write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
     failures = outcome.failures()
     slips = {line.split(" rg=")[1].split()[0]: line.split(" slips=")[1].split()[0] for line in outcome.sweep_lines}
     print(f"[kit]   {name}: flood ({outcome.seconds:.1f} s at {outcome.baud} baud): {outcome.record()}, slips "
