@@ -267,7 +267,7 @@ def _ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
     """The ground scenario's build of --board and --model, built or brought
     up to date; returns it and its logs folder."""
     check_runs_here(args.board)
-    variants.get(args.model)
+    variants.get(args.model)  # argparse checks the name only when it comes from the command line
     check_provisioned()
     build_dir = ground.ground_build_dir(args.board, args.model)
     logs = build_dir.with_name(build_dir.name + "-logs")
@@ -348,7 +348,7 @@ def cmd_footprint(args: argparse.Namespace) -> int:
     profile, toward = ablation.check_profile(args.profile), ablation.check_profile(args.toward)
     models = args.model or list(variants.names())
     for model in models:
-        variants.get(model)
+        variants.get(model)  # as in _ground_build
     if not args.report_only:
         check_provisioned()
         for model in models:
