@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """What each F´ knob costs: `kit footprint`.
 
-For one board and model, build the deployment with a footprint profile
+For one board and variant (app/variants.yaml), build the deployment with a footprint profile
 (modules/fprime/snippets), then once per knob with only that knob moved to
 another profile's value (or, for the assert level, to each other level), and
 record ROM, static RAM and their change per layer against the profile's own
@@ -11,7 +11,9 @@ what a knob costs includes what it breaks.
 
 The knobs are the F´ switches of modules/fprime/Kconfig in which the two
 profiles differ, so the list follows the Kconfig and the profiles, not a
-list here; and the services' other forms a model has (SERVICE_KNOBS).
+list here; and the services' other forms the variant's model has
+(SERVICE_KNOBS), but for those its build has already (a policy may select
+one).
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from . import console, modules, render, runner
+from . import console, modules, render, runner, variants
 from .document import CAVEAT, Section, Table, Text
 from .footprint import kconfig, measure
 from .workspace import KIT_ROOT, KitError, board_dir_name, environment
@@ -55,7 +57,7 @@ class Knob:
 
     name: str
     settings: tuple[str, ...] = ()  # CONFIG_X=value
-    models: tuple[str, ...] = ()  # the models it applies to (empty: all)
+    models: tuple[str, ...] = ()  # the execution models it applies to, whatever the policy (empty: all)
 
 
 #: Knobs that are not F´ switches: a service's other form, where a model has it
@@ -64,8 +66,8 @@ SERVICE_KNOBS = (
     # comes out of the C heap, whose arena grows to hold it (app/Kconfig)
     Knob("telemetry store: TlmChan -> TlmLinearChan",
          ("CONFIG_KIT_TELEMETRY_LINEAR=y", "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=15360"), ("baremetal",)),
-    # fprime-baremetal's dispatcher (baremetal's passive policy has it
-    # already): no task, stack or queue; its tables from F´'s allocator
+    # fprime-baremetal's dispatcher: no task, stack or queue; its tables
+    # from F´'s allocator (baremetal_passive's policy selects it already)
     Knob("command dispatcher: CommandDispatcher -> PassiveCmdDispatcher",
          ("CONFIG_KIT_CMD_DISPATCHER_PASSIVE=y",), ("baremetal",)),
 )
@@ -90,10 +92,11 @@ def fprime_settings(dotconfig: Path) -> dict[str, str]:
     return {k: v for k, v in kconfig(dotconfig).items() if k.startswith(_PREFIX)}
 
 
-def knobs(base: dict[str, str], other: dict[str, str], model: str) -> list[Knob]:
+def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[str, str] | None = None) -> list[Knob]:
     """One knob per F´ switch in which two profiles' builds differ (moved to
-    the other's value), one per other assert level, and the model's service
-    knobs."""
+    the other's value), one per other assert level, and the execution
+    model's service knobs but those the profile's build (its whole .config,
+    `built`) has already."""
     found = [Knob("profile")]
     current_assert = next((k for k in ASSERT_LEVELS if base.get(k) == "y"), None)
     for level in ASSERT_LEVELS:
@@ -106,7 +109,10 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str) -> list[Knob]
         if before != after:
             name = key.removeprefix(_PREFIX).lower()
             found.append(Knob(f"{name}: {before} -> {after}", (f"{key}={after}",)))
-    return found + [k for k in SERVICE_KNOBS if not k.models or model in k.models]
+    def has(knob: Knob) -> bool:
+        return built is not None and all(built.get(k) == v for k, v in (s.split("=", 1) for s in knob.settings))
+
+    return found + [k for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
 
 
 _OVERFLOW = re.compile(r"region `(?P<region>\w+)' overflowed by (?P<bytes>\d+) bytes")
@@ -124,11 +130,11 @@ def build_failure(log: Path) -> str:
     return f"{'; '.join(list(dict.fromkeys(found))[:2]) or 'no reason found'} ({log.name})"
 
 
-def _build(board: str, model: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path,
+def _build(board: str, variant: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path,
            cmake_only: bool = False) -> bool:
     command = ["west", "build", "-p", "always", "-b", board, "-d", str(build_dir), "-S", profile,
                *(["--cmake-only"] if cmake_only else []), str(KIT_ROOT / "app"), "--",
-               f"-DCONFIG_KIT_MODEL_{model.upper()}=y", *(f"-D{s}" for s in settings)]
+               *variants.get(variant).cmake_args(), *(f"-D{s}" for s in settings)]
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as output:
         output.write(" ".join(command) + "\n")
@@ -142,11 +148,11 @@ def _slug(knob: str) -> str:
     return re.sub(r"-+", "-", "".join(c if c.isalnum() else "-" for c in knob)).strip("-")
 
 
-def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) -> Row:
+def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) -> Row:
     started = time.monotonic()
     slug = _slug(knob.name)
     build_dir = out_dir / slug
-    row = Row(knob.name, list(knob.settings), built=_build(board, model, profile, knob.settings, build_dir,
+    row = Row(knob.name, list(knob.settings), built=_build(board, variant, profile, knob.settings, build_dir,
                                                             out_dir / f"{slug}.build.log"))
     if row.built:
         footprint = measure(build_dir)
@@ -171,32 +177,35 @@ def _measure(knob: Knob, board: str, model: str, profile: str, out_dir: Path) ->
     return row
 
 
-def run(board: str, model: str, profile: str, toward: str, out_dir: Path, say: Callable[[str], None]) -> list[Row]:
-    """The ablation of one board and model from `profile`, each knob moved toward `toward`."""
+def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
+        say: Callable[[str], None]) -> list[Row]:
+    """The ablation of one board and variant from `profile`, each knob moved toward `toward`."""
     out_dir.mkdir(parents=True, exist_ok=True)
-    say(f"footprint: {board} {model}: building the profiles {profile} and {toward}")
-    base = _measure(Knob("profile"), board, model, profile, out_dir)
+    say(f"footprint: {board} {variant}: building the profiles {profile} and {toward}")
+    base = _measure(Knob("profile"), board, variant, profile, out_dir)
     if not base.built:
-        raise KitError(f"the profile {profile} does not build for {board} {model}: {base.note}")
+        raise KitError(f"the profile {profile} does not build for {board} {variant}: {base.note}")
     # The other profile's values: its configuration is enough (it need not fit)
     other_dir = out_dir / "toward"
-    if not _build(board, model, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True):
-        raise KitError(f"the profile {toward} does not configure for {board} {model}: "
+    if not _build(board, variant, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True):
+        raise KitError(f"the profile {toward} does not configure for {board} {variant}: "
                        f"{out_dir / 'toward.configure.log'}")
+    built = kconfig(out_dir / "profile" / "zephyr" / ".config")
     plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
-                 fprime_settings(other_dir / "zephyr" / ".config"), model)
+                 fprime_settings(other_dir / "zephyr" / ".config"), variants.get(variant).model, built)
     rows = [base]
     for index, knob in enumerate(plan[1:], start=1):
-        row = _measure(knob, board, model, profile, out_dir)
+        row = _measure(knob, board, variant, profile, out_dir)
         rows.append(row)
         verdict = "build FAILED" if not row.built else ("nominal PASS" if row.passed else "nominal FAIL")
         say(f"footprint: {index}/{len(plan)} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
             f"({row.seconds:.0f} s)")
     # Last, the other profile whole: every knob moved at once
-    rows.append(_measure(Knob(f"profile {toward}"), board, model, toward, out_dir))
+    rows.append(_measure(Knob(f"profile {toward}"), board, variant, toward, out_dir))
     say(f"footprint: profile {toward}: {'built' if rows[-1].built else 'build FAILED'} {rows[-1].note}")
+    # "model": the variant, as `kit footprint --model` names it
     (out_dir / "footprint.json").write_text(json.dumps(
-        {"board": board, "model": model, "profile": profile, "toward": toward,
+        {"board": board, "model": variant, "profile": profile, "toward": toward,
          "rows": [asdict(r) for r in rows]}, indent=2) + "\n")
     return rows
 

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """kit: the kit's command line (also `west kit`).
 
-  kit compare   build both variants, run them under QEMU, write the comparison and its report
+  kit compare   build every variant, run them under QEMU, write the comparison and its report
   kit report    turn a results file into report.md / .html / .json / .csv (optionally against a baseline)
   kit test      twister suite under QEMU, determinism, budget, ground-link integration, host and tooling tests
   kit gds       boot a board and model under QEMU with fprime-gds on its ground link
@@ -37,9 +37,10 @@ from . import (
     sweep,
     symbols,
     testing,
+    variants,
 )
 from .board import REFERENCE_BOARD, new_board
-from .workspace import KIT_ROOT, VARIANTS, KitError, check_board, check_provisioned, check_variant, one_at_a_time
+from .workspace import KIT_ROOT, KitError, check_board, check_provisioned, one_at_a_time
 
 
 def _say(message: str) -> None:
@@ -266,7 +267,7 @@ def _ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
     """The ground scenario's build of --board and --model, built or brought
     up to date; returns it and its logs folder."""
     check_runs_here(args.board)
-    check_variant(args.model)
+    variants.get(args.model)  # argparse checks the name only when it comes from the command line
     check_provisioned()
     build_dir = ground.ground_build_dir(args.board, args.model)
     logs = build_dir.with_name(build_dir.name + "-logs")
@@ -323,7 +324,7 @@ def _symbol_tables(source: Path, variant: str | None) -> dict[str, dict[str, int
     data = results.load(source)
     names = [variant] if variant else data.names()
     if len(names) != 1 or names[0] not in data.variants:
-        raise KitError(f"{source} holds the variants {', '.join(data.names())}: name one with --variant")
+        raise KitError(f"{source} holds the variants {', '.join(data.names())}: name one with --model")
     tables = data.variants[names[0]].symbols
     if not tables:
         raise KitError(f"{source}: variant {names[0]} has no symbol tables (written by a kit before they existed)")
@@ -336,10 +337,10 @@ def cmd_sizediff(args: argparse.Namespace) -> int:
         # A results file keeps only symbols of SYMBOL_FLOOR bytes or more: floor the build's alike
         build = before if before.is_dir() else now
         floored = symbols.of_build(build, symbols.SYMBOL_FLOOR)
-        tables = (floored, _symbol_tables(now, args.variant)) if before.is_dir() \
-            else (_symbol_tables(before, args.variant), floored)
+        tables = (floored, _symbol_tables(now, args.model)) if before.is_dir() \
+            else (_symbol_tables(before, args.model), floored)
     else:
-        tables = (_symbol_tables(before, args.variant), _symbol_tables(now, args.variant))
+        tables = (_symbol_tables(before, args.model), _symbol_tables(now, args.model))
     for kind in args.kind or symbols.KINDS:
         for line in symbols.render(symbols.diff(tables[0].get(kind, {}), tables[1].get(kind, {}), kind),
                                    None if args.all else args.limit):
@@ -351,9 +352,9 @@ def cmd_sizediff(args: argparse.Namespace) -> int:
 def cmd_footprint(args: argparse.Namespace) -> int:
     check_runs_here(args.board)
     profile, toward = ablation.check_profile(args.profile), ablation.check_profile(args.toward)
-    models = args.model or list(VARIANTS)
+    models = args.model or list(variants.names())
     for model in models:
-        check_variant(model)
+        variants.get(model)  # as in _ground_build
     if not args.report_only:
         check_provisioned()
         for model in models:
@@ -399,7 +400,7 @@ def cmd_new_board(args: argparse.Namespace) -> int:
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(prog="kit", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = top.add_subparsers(dest="command", required=True)
-    p = sub.add_parser("compare", help="build and run both variants, print the comparison")
+    p = sub.add_parser("compare", help="build and run every variant, print the comparison")
     p.add_argument("--board", action="append",
                    help="board to compare on (repeatable; default: every platform of the suite)")
     p.add_argument("--output", default=str(KIT_ROOT / "build" / "compare"), help="build folders, logs, results")
@@ -425,13 +426,12 @@ def parser() -> argparse.ArgumentParser:
                         "(with --hardware-map)")
     t.add_argument("--hardware-map", help="twister's hardware map of the attached boards (west twister "
                                           "--generate-hardware-map makes one)")
-    t.add_argument("--model", action="append",
-                   help="with --device-testing: the variant to play (kit.<variant> of tests/deployment/testcase.yaml: "
-                        "baremetal, baremetal_budgeted, ...; repeatable; default: every one)")
+    variants.add_model_option(t, "with --device-testing, the one to play (repeatable; default: every one)",
+                              repeatable=True)
     t.set_defaults(func=cmd_test)
     g = sub.add_parser("gds", help="boot a board and model under QEMU with fprime-gds on its ground link")
     g.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
-    g.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
+    variants.add_model_option(g, "default: rtos", default="rtos")
     g.add_argument("--port", type=int, default=5000, help="the GDS web page's port (default: 5000)")
     g.add_argument("--dictionary", type=Path, default=None,
                    help="the F´ dictionary to give fprime-gds (default: the build's own; refused unless it is "
@@ -440,13 +440,15 @@ def parser() -> argparse.ArgumentParser:
     w = sub.add_parser("serial-sweep", help="the serial-load sweep (uplink commands, downlink packets) of a board "
                                             "and model, through its ground link under QEMU")
     w.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
-    w.add_argument("--model", default="rtos", choices=VARIANTS, help="execution model (default: rtos)")
+    variants.add_model_option(w, "default: rtos", default="rtos")
     w.set_defaults(func=cmd_serial_sweep)
     d = sub.add_parser("sizediff", help="symbols added, removed, grown and shrunk between two builds (as "
                                         "bloat-o-meter): build folders, or results files / baselines")
     d.add_argument("before", help="build folder, results file or baseline (tests/baselines/<board>.json)")
     d.add_argument("now", help="build folder, results file or baseline")
-    d.add_argument("--variant", help="the variant to take from a results file that holds several")
+    variants.add_model_option(d, "the one to take from a results file that holds several")
+    # The option's name before every command took --model; kept for scripts that use it
+    d.add_argument("--variant", dest="model", choices=variants.names(), help=argparse.SUPPRESS)
     d.add_argument("--kind", action="append", choices=symbols.KINDS, help="rom or ram (default: both)")
     d.add_argument("--limit", type=int, default=40, help="symbols shown per kind, largest change first (default 40)")
     d.add_argument("--all", action="store_true", help="every changed symbol")
@@ -454,7 +456,7 @@ def parser() -> argparse.ArgumentParser:
     f = sub.add_parser("footprint", help="what each F´ knob costs: from a footprint profile, one build per knob "
                                          "(ROM, RAM by layer, the nominal run)")
     f.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
-    f.add_argument("--model", action="append", choices=VARIANTS, help="execution model (repeatable; default: all)")
+    variants.add_model_option(f, "repeatable; default: every one", repeatable=True)
     f.add_argument("--profile", default="fprime-kit", help="the profile to start from (modules/fprime/snippets; "
                                                            "default: fprime-kit)")
     f.add_argument("--toward", default="fprime-default", help="the profile whose values the knobs move to "

@@ -23,6 +23,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from . import variants
 from .runner import Qemu, asks_at_boot, build_kconfig, cache_value, ends_run
 from .workspace import KIT_ROOT, KitError, board_dir_name, environment
 
@@ -229,25 +230,25 @@ class GroundStation:
         shutil.rmtree(self._transport_dir, ignore_errors=True)
 
 
-def ground_build_dir(board: str, model: str) -> Path:
-    """Where `kit gds` builds a board and model's ground scenario (its logs
+def ground_build_dir(board: str, variant: str) -> Path:
+    """Where `kit gds` builds a board and variant's ground scenario (its logs
     go beside it, `<folder>-logs`)."""
-    return KIT_ROOT / "build" / f"gds-{board_dir_name(board)}-{model}"
+    return KIT_ROOT / "build" / f"gds-{board_dir_name(board)}-{variant}"
 
 
-def build_ground(board: str, model: str, log: Path) -> Path:
-    """Build (or bring up to date) the ground scenario of a board and model
-    with west, as a user would; returns the build folder."""
-    build_dir = ground_build_dir(board, model)
+def build_ground(board: str, variant: str, log: Path) -> Path:
+    """Build (or bring up to date) the ground scenario of a board and variant
+    (app/variants.yaml) with west, as a user would; returns the build folder."""
+    build_dir = ground_build_dir(board, variant)
     command = ["west", "build", "-b", board, "-d", str(build_dir), str(KIT_ROOT / "app"), "--",
-               f"-DCONFIG_KIT_MODEL_{model.upper()}=y", "-DCONFIG_KIT_SCENARIO_GROUND=y"]
+               *variants.get(variant).cmake_args(), "-DCONFIG_KIT_SCENARIO_GROUND=y"]
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as output:
         code = subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=output,
                               stderr=subprocess.STDOUT).returncode
     if code != 0:
         tail = "\n".join(log.read_text(errors="replace").splitlines()[-25:])
-        raise KitError(f"building {board} {model} failed ({' '.join(command)}); log {log}:\n{tail}")
+        raise KitError(f"building {board} {variant} failed ({' '.join(command)}); log {log}:\n{tail}")
     return build_dir
 
 

@@ -14,7 +14,8 @@ KIT_ROOT = Path(__file__).resolve().parents[2]
 DEPS = KIT_ROOT / "deps"
 BOARDS = KIT_ROOT / "boards"
 # The execution models: every folder with a Kconfig.model (app/Kconfig
-# sources each one as an entry of its KIT_MODEL choice)
+# sources each one as an entry of its KIT_MODEL choice). The variants the
+# commands take (a model, or a model under a policy) are kittools.variants'.
 VARIANTS = tuple(sorted(path.parent.name for path in KIT_ROOT.glob("*/Kconfig.model")))
 UPSTREAMS = ("zephyr", "fprime", "fprime-baremetal", "fprime-zephyr")
 
@@ -54,11 +55,6 @@ def check_board(board: str, boards: Path | None = None) -> str:
             "To bring the kit to a new board, see docs/porting.md (kit new-board scaffolds one)."
         )
     return folder.name
-
-
-def check_variant(variant: str) -> None:
-    if variant not in VARIANTS:
-        raise KitError(f"unknown variant '{variant}'; the variants are: {', '.join(VARIANTS)}")
 
 
 def check_provisioned() -> None:

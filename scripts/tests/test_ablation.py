@@ -16,6 +16,10 @@ def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_le
         "com_buffer_max_size: 128 -> 512", "object_names: n -> y"]
     assert [k.name for k in ablation.knobs(kit, default, "baremetal")[-2:]] == [
         "telemetry store: TlmChan -> TlmLinearChan", "command dispatcher: CommandDispatcher -> PassiveCmdDispatcher"]
+    # A policy that selects a service's other form already (baremetal_passive's dispatcher) has no knob for it
+    passive = {"CONFIG_KIT_MODEL_BAREMETAL": "y", "CONFIG_KIT_CMD_DISPATCHER_PASSIVE": "y"}
+    assert [k.name for k in ablation.knobs(kit, default, "baremetal", passive)[-1:]] == [
+        "telemetry store: TlmChan -> TlmLinearChan"]
     assert found[1].settings == ("CONFIG_FPRIME_ASSERT_NONE=y",)
     assert found[-1].settings == ("CONFIG_FPRIME_OBJECT_NAMES=y",)
 

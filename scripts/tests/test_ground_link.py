@@ -159,7 +159,7 @@ def test_kit_gds_refuses_an_unknown_board_or_model(capsys):
 
     assert cli.main(["gds", "--board", "nucleo_f429zi"]) == 2
     assert "no kit port" in capsys.readouterr().err
-    with pytest.raises(SystemExit):  # argparse: the models are the model folders
+    with pytest.raises(SystemExit):  # argparse: the variants are app/variants.yaml's
         cli.main(["gds", "--model", "superloop"])
 
 

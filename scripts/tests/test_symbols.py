@@ -94,8 +94,10 @@ def test_sizediff_between_results_files(tmp_path, capsys):
     for name, data in (("before.json", before), ("now.json", now)):
         paths.append(tmp_path / name)
         paths[-1].write_text(json.dumps(data.to_json()))
-    assert cli.main(["sizediff", str(paths[0]), str(paths[1]), "--variant", "rtos", "--kind", "rom"]) == 0
+    assert cli.main(["sizediff", str(paths[0]), str(paths[1]), "--model", "rtos", "--kind", "rom"]) == 0
     out = capsys.readouterr().out
     assert "ROM: add/remove: 1/1 grow/shrink: 1/0 up/down: 180/-200 (-20)" in out
     assert cli.main(["sizediff", str(paths[0]), str(paths[1])]) == 2  # two variants: which?
-    assert "name one with --variant" in capsys.readouterr().err
+    assert "name one with --model" in capsys.readouterr().err
+    # --variant, its name before every command took --model, still works
+    assert cli.main(["sizediff", str(paths[0]), str(paths[1]), "--variant", "rtos", "--kind", "rom"]) == 0

@@ -17,6 +17,7 @@ import time
 from pathlib import Path
 
 import pytest
+import yaml
 from twister_harness import DeviceAdapter
 from twister_harness.exceptions import TwisterHarnessTimeoutException
 
@@ -198,6 +199,18 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
     },
 }
 SCENARIOS = ("nominal", "load", "faults", "soak", "stack_overflow", "assert")
+#: The kit's variants (their one table); each has its expectations above
+VARIANTS_FILE = Path(__file__).resolve().parents[3] / "app" / "variants.yaml"
+
+
+def check_expectations(variant: str) -> None:
+    """Fail a run on a variant the table lists and EXPECTED does not, or one
+    the table does not list, with what to fix (scripts/tests/test_variants.py
+    checks the table against EXPECTED before any build)."""
+    table = list(yaml.safe_load(VARIANTS_FILE.read_text())["variants"])
+    assert variant in table, f"the build's variant {variant} is not in {VARIANTS_FILE.name}: {table}"
+    missing = [name for name in table if name not in EXPECTED]
+    assert not missing, f"no expectations for {', '.join(missing)} ({VARIANTS_FILE.name}): add them to EXPECTED"
 
 
 def config_value(build_dir: Path, name: str, default: str | None = None) -> str:
@@ -260,6 +273,7 @@ def read_until_end(dut: DeviceAdapter, timeout_s: float) -> tuple[list[str], boo
 def test_scenario(dut: DeviceAdapter, scenario: str) -> None:
     build = Path(dut.device_config.build_dir)
     variant = config_value(build, "CONFIG_KIT_VARIANT_NAME")
+    check_expectations(variant)
     expected = for_build(build, EXPECTED[variant][scenario])
     timeout_s = DEFAULT_TIMEOUT_S
     if scenario == "soak":
