@@ -338,11 +338,9 @@ class Driver:
         # Every frame detected went to the dispatcher but those LinkHealth
         # dropped (in flight beyond its limit) and the one segment request
         # that was measured; requests lost or dropped on the way count in
-        # neither. The downlink axis' load and unload commands are its own.
-        commands = got.frames_detected - got.commands_dropped - 1
-        if axis is DOWNLINK:
-            commands -= 1 + (1 if unload else 0)
-        traffic.commands_dispatched = commands
+        # neither. (The downlink axis delivers packets, counted by the host.)
+        if axis is not DOWNLINK:
+            traffic.commands_dispatched = got.frames_detected - got.commands_dropped - 1
         traffic.uart_received = got.uart_received
         traffic.ring_drops = got.ring_drops
         traffic.uart_errors = got.uart_errors
