@@ -5,10 +5,12 @@ Checks that the pinned Zephyr knows the board (a twister platform file names
 it), that it is an ARM board, and that its flash and RAM hold the deployment
 as measured on a ported board; then copies the reference board's folder with
 a TODO header in each file and adds the board to the twister files'
-platform lists. A real board (no emulator) gets its vendor HAL (its file in
-the folder, west.yml's allow-list), a kit.conf without icount, a link UART
-from its devicetree, and joins the boards built and not run
-(tests/boards). docs/porting.md is the checklist that follows.
+platform lists: a QEMU board to the suites that run, a real board to the
+boards built and not run (tests/boards) alone (suite_files). A real board
+(no emulator) gets its vendor HAL (its file in the folder, west.yml's
+allow-list), a kit.conf without icount, and a link UART: one its devicetree
+enables besides the console, else one its SoC has, enabled on pins the HAL's
+pinctrl file names (spare_uart). docs/porting.md is the checklist that follows.
 """
 
 from __future__ import annotations
@@ -67,8 +69,8 @@ REAL_TODOS: dict[str, tuple[str, ...]] = {
         "Zephyr symbols only here; a kit symbol belongs in Kconfig.defconfig.",
     ),
     "app.overlay": (
-        "Devicetree copied from a QEMU board: choose a UART of this board's devicetree for the ground",
-        "link (kit,link-uart: not the console; enabled, with its pins) and say how to wire it.",
+        "Written for this board by the scaffold: check the ground link's UART (kit,link-uart: not the",
+        "console; enabled, with its pins) against the board's schematic, and say how to wire it.",
     ),
 }
 REAL_KIT_CONF = """# SPDX-License-Identifier: Apache-2.0
@@ -87,6 +89,42 @@ REAL_OVERLAY = """/* SPDX-License-Identifier: Apache-2.0 */
 		kit,link-uart = &{uart};
 	}};
 }};
+"""
+# A UART of the SoC the board leaves disabled, enabled here on pins of the
+# HAL's pinctrl file: the form the boards' own devicetrees use for theirs
+SPARE_OVERLAY = """/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The kit's ground link: F´'s comm stack talks to the ground over this UART
+ * (app/Top/KitTopology.cpp). The board enables no UART besides its console
+ * (the run's record), so the scaffold enabled {uart}, disabled in the SoC's
+ * devicetree, on pins the HAL's {pinctrl} names:
+ * TX {tx_pin}, RX {rx_pin}. Wire a 3.3 V USB-serial adapter: its RX to {tx_pin},
+ * its TX to {rx_pin}, and ground. None of these pins is used by the board's
+ * own devicetree; check the board's schematic (solder bridges, the connector).
+ */
+/ {{
+	chosen {{
+		kit,link-uart = &{uart};
+	}};
+}};
+
+&{uart} {{
+	pinctrl-0 = <&{tx} &{rx}>;
+	pinctrl-names = "default";
+	current-speed = <115200>;
+	status = "okay";
+}};
+"""
+# No UART found for the link: no kit,link-uart, so the build stops at the
+# kit's own #error (app/Top/KitTopology.cpp) rather than in devicetree
+NO_LINK_OVERLAY = """/* SPDX-License-Identifier: Apache-2.0 */
+/*
+ * The kit's ground link needs a UART besides the console, and the scaffold
+ * found none it could enable: {reason}.
+ * Choose one here (chosen {{ kit,link-uart = &usartN; }}) and enable it with
+ * its pins (pinctrl-0, pinctrl-names, current-speed, status = "okay");
+ * until then the build stops and says so (app/Top/KitTopology.cpp).
+ */
 """
 HAL_FILE = """# The Zephyr modules this board needs beyond CMSIS (app/board.cmake refuses
 # a workspace without them): the module's name in Zephyr's manifest, and its
@@ -167,13 +205,24 @@ def resolve_identifier(target: str, known: dict[str, Path], zephyr: Path) -> str
                    "Check the name with `west boards` (the kit pins Zephyr in west.yml).")
 
 
+def board_dts(platform_file: Path) -> Path | None:
+    """The board's .dts: the platform file's stem, else the folder's .dts
+    whose stem starts the platform file's (a board with several platform
+    files: nucleo_f030r8_1.yaml is nucleo_f030r8.dts's)."""
+    dts = platform_file.with_suffix(".dts")
+    if dts.is_file():
+        return dts
+    prefixes = [p for p in platform_file.parent.glob("*.dts") if platform_file.stem.startswith(p.stem)]
+    return max(prefixes, key=lambda p: len(p.stem), default=None)
+
+
 def _dts_texts(platform_file: Path) -> list[str]:
-    """The board's .dts (same stem as its platform file), then every .dtsi it
+    """The board's .dts (board_dts), then every .dtsi it
     includes, directly or not, that sits in the same folder. The SoC's .dtsi
     files live elsewhere and are left out: a size defined only there is
     reported as unknown rather than guessed."""
-    dts = platform_file.with_suffix(".dts")
-    if not dts.is_file():
+    dts = board_dts(platform_file)
+    if dts is None:
         return []
     texts, queue, seen = [], [dts], {dts}
     while queue:
@@ -289,6 +338,129 @@ def link_uarts(platform_file: Path) -> list[str]:
     return found
 
 
+@dataclass(frozen=True)
+class SpareUart:
+    """A UART of the board's SoC that its devicetree leaves disabled, with
+    TX and RX pins the HAL's pinctrl file names and the board does not use."""
+
+    label: str  #: e.g. usart1
+    tx: str  #: pinctrl label, e.g. usart1_tx_pa9
+    rx: str  #: e.g. usart1_rx_pa10
+    pinctrl: str  #: the pinctrl file as the board includes it, e.g. st/l1/stm32l152retx-pinctrl.dtsi
+
+    def pin(self, label: str) -> str:
+        """A pinctrl label's pin as a datasheet writes it: PA9."""
+        return label.rsplit("_", 1)[-1].upper()
+
+
+def dts_include_dirs(board: ZephyrBoard, zephyr: Path, hal_folder: Path | None = None) -> list[Path]:
+    """Where `#include <...>` of a board's devicetree resolves, as Zephyr's
+    build searches: the board's folder, Zephyr's dts/<arch>, dts/common,
+    dts, and the HAL module's dts (an STM32's pinctrl files live there)."""
+    dirs = [board.platform_file.parent, zephyr / "dts" / board.arch, zephyr / "dts" / "common", zephyr / "dts"]
+    return dirs + ([hal_folder / "dts"] if hal_folder is not None else [])
+
+
+def dts_tree(platform_file: Path, include_dirs: list[Path]) -> tuple[list[tuple[Path, str]], list[str]]:
+    """The board's .dts and every devicetree file it includes, directly or
+    not, wherever it sits (the SoC's .dtsi, the HAL's pinctrl file); and the
+    includes not found (a HAL not fetched yet). Headers (.h) are left out."""
+    dts = board_dts(platform_file)
+    if dts is None:
+        return [], []
+    found: list[tuple[Path, str]] = []
+    missing: list[str] = []
+    queue, seen = [dts], {dts}
+    while queue:
+        path = queue.pop(0)
+        text = path.read_text(errors="replace")
+        found.append((path, text))
+        for quote, include in re.findall(r'#include\s+(["<])([^">]+\.dtsi?)[">]', text):
+            # A quoted include is looked for beside its file first, as cpp does
+            dirs = ([path.parent] if quote == '"' else []) + include_dirs
+            target = next((d / include for d in dirs if (d / include).is_file()), None)
+            if target is None:
+                missing.append(include)
+            elif target not in seen:
+                seen.add(target)
+                queue.append(target)
+    return found, missing
+
+
+_PIN = re.compile(r"_(p[a-z]\d+)$")
+
+
+def _pins_in_use(texts: list[str]) -> set[str]:
+    """The pins a board's own devicetree gives to something (pinctrl-N of
+    its nodes, *-gpios of its LEDs and buttons), as 'pa9'; a connector's
+    gpio-map (every header pin) is not a use."""
+    used: set[str] = set()
+    for text in texts:
+        for cells in re.findall(r"\bpinctrl-\d+\s*=\s*<([^;]*)>", text):
+            used.update(m.group(1) for ref in re.findall(r"&(\w+)", cells) for m in [_PIN.search(ref)] if m)
+        for cells in re.findall(r"(?<![\w-])(?:[\w-]+-)?gpios\s*=\s*<([^;]*)>", text):
+            used.update(f"p{port}{pin}" for port, pin in re.findall(r"&gpio([a-z])\s+(\d+)", cells))
+    return used
+
+
+def _uart_order(label: str) -> tuple[bool, int, str]:
+    """usart1 before usart3 before uart4; an LPUART last (a low-power
+    peripheral, slower clocked on many parts)."""
+    number = re.search(r"(\d+)$", label)
+    return label.startswith("lp"), int(number.group(1)) if number else 0, label
+
+
+def spare_uart(board: ZephyrBoard, zephyr: Path, hal_folder: Path | None) -> tuple[SpareUart | None, str]:
+    """For a board whose devicetree enables no UART besides its console: a
+    UART of its SoC (defined in the SoC's devicetree, disabled, not the
+    console) with a TX and an RX pin the HAL's pinctrl file for its part
+    names and the board's own devicetree does not use. Returns it, or None
+    and why none was found (for the porter's TODO)."""
+    files, missing = dts_tree(board.platform_file, dts_include_dirs(board, zephyr, hal_folder))
+    if not files:
+        return None, f"no devicetree of the board found beside {board.platform_file.name}"
+    board_texts = [t for p, t in files if p.parent == board.platform_file.parent]
+    console = next((m.group(1) for t in board_texts for m in [re.search(r"zephyr,console\s*=\s*&(\w+)", t)] if m),
+                   None)
+    status: dict[str, str] = {}
+    for _, text in files:
+        for match in re.finditer(r"(?<![\w&])(\w+)\s*:\s*(?:serial|uart)@[0-9a-fA-F]+\s*\{", text):
+            body = _own_properties(_braced(text, match.end() - 1))
+            if re.search(r"compatible\s*=[^;]*u(?:s)?art", body):  # any of its compatibles: st,stm32-uart
+                found = re.search(r'status\s*=\s*"(\w+)"', body)
+                status[match.group(1)] = found.group(1) if found else "okay"
+    # What overrides a node's status: the SoC's files first, the board's last, as they are included
+    for _, text in sorted(files, key=lambda f: f[0].parent == board.platform_file.parent):
+        for match in re.finditer(r"^\s*&(\w+)\s*\{", text, re.MULTILINE):
+            found = re.search(r'status\s*=\s*"(\w+)"', _own_properties(_braced(text, match.end() - 1)))
+            if match.group(1) in status and found:
+                status[match.group(1)] = found.group(1)
+    candidates = sorted((label for label, state in status.items() if state == "disabled" and label != console),
+                        key=_uart_order)
+    if not candidates:
+        return None, f"the SoC's devicetree defines no disabled UART besides the console ({console or 'none'})"
+    pinctrl = [(path, text) for path, text in files if path.name.endswith("-pinctrl.dtsi")]
+    if not pinctrl:
+        absent = [name for name in missing if name.endswith("-pinctrl.dtsi")]
+        if absent:
+            return None, (f"the board's devicetree includes {absent[0]}, not found: fetch the board's HAL "
+                          "(scripts/setup.sh), then scaffold again with --force")
+        return None, f"no pinctrl file in the board's devicetree names pins for {', '.join(candidates)}"
+    used = _pins_in_use(board_texts)
+    path, text = pinctrl[0]
+    labels = list(dict.fromkeys(re.findall(r"(?<![\w&])(\w+_(?:tx|rx)_(?:\w+_)?p[a-z]\d+)\s*:", text)))
+    shown = next((str(path.relative_to(d)) for d in dts_include_dirs(board, zephyr, hal_folder)
+                  if path.is_relative_to(d)), path.name)
+    for uart in candidates:
+        free = {end: [label for label in labels if label.startswith(f"{uart}_{end}_")
+                      and label.rsplit("_", 1)[-1] not in used]
+                for end in ("tx", "rx")}
+        if free["tx"] and free["rx"]:
+            return SpareUart(uart, free["tx"][0], free["rx"][0], shown), ""
+    return None, (f"{shown} names no TX and RX pins free on this board for {', '.join(candidates)} "
+                  f"(in use: {', '.join(sorted(used)) or 'none'})")
+
+
 def soc_folder(board: ZephyrBoard, zephyr: Path) -> Path | None:
     """The folder of Zephyr's soc/ tree whose soc.yml lists the board's SoC
     (its board.yml names it): soc/<vendor>/ or soc/<vendor>/<family>/."""
@@ -352,10 +524,23 @@ _LEVERS = {
 }
 
 
+def smallest_models(measured: model.Results) -> dict[str, str]:
+    """Per resource ("flash", "RAM"), the variant of a results file that
+    needs the least of it: the model a small board can still take."""
+    if not measured.variants:
+        raise KitError("the reference's results have no variant to measure the deployment from")
+    need = {"flash": model.ROM, "RAM": model.RAM}
+    return {what: min(measured.variants, key=lambda v: (measured.variants[v].metrics[metric], v))
+            for what, metric in need.items()}
+
+
 def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -> list[str]:
-    """Per variant, the deployment's measured need (a ported board's results
-    file) against the board's memory; KitError if a variant does not fit.
-    Returns one headroom line per variant."""
+    """The deployment's measured need (a ported board's results file)
+    against the board's memory, from the smallest model (per resource, the
+    variant that needs the least): KitError if even it does not fit, named.
+    Returns a headroom line per variant, and for a larger model the board
+    cannot hold, a line saying so (its build in kit test fails until the
+    deployment shrinks)."""
     shown_as = shown_as or str(baseline)
     if board.ram_kib is None or board.flash_kib is None:
         raise KitError(f"the memory of {board.identifier} is unknown (no ram/flash in {board.platform_file.name}, "
@@ -363,29 +548,35 @@ def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -
                        f"cannot be checked. Find out: build once (west build -b {board.identifier} -T app/kit.rtos) "
                        "and read the linker's 'Memory region' lines, or the board's documentation.")
     measured = results.load(baseline)
-    have = {"flash": board.flash_kib * 1024, "RAM": board.ram_kib * 1024}
-    headroom: list[str] = []
-    short: list[str] = []
-    short_of: set[str] = set()
+    # Every model, or the smallest might be one of those measured only
     for variant in VARIANTS:
-        found = measured.variants.get(variant)
-        if found is None:
+        if variant not in measured.variants:
             raise KitError(f"{shown_as} has no {variant} variant to measure the deployment from")
-        need = {"flash": found.metrics[model.ROM], "RAM": found.metrics[model.RAM]}
-        for what in ("flash", "RAM"):
-            if need[what] > have[what]:
-                short.append(f"{variant} needs {need[what] / 1024:.1f} KiB of {what}, "
-                             f"the board has {have[what] / 1024:.0f} KiB")
-                short_of.add(what)
-        headroom.append(f"{variant}: " + ", ".join(
-            f"{what} {need[what] / 1024:.1f} of {have[what] / 1024:.0f} KiB "
-            f"({(have[what] - need[what]) / 1024:.1f} KiB spare)" for what in ("flash", "RAM")))
+    have = {"flash": board.flash_kib * 1024, "RAM": board.ram_kib * 1024}
+    need = {variant: {"flash": found.metrics[model.ROM], "RAM": found.metrics[model.RAM]}
+            for variant, found in measured.variants.items()}
+    smallest = smallest_models(measured)
+    short = [f"{what}: the smallest model, {smallest[what]}, needs {need[smallest[what]][what] / 1024:.1f} KiB, "
+             f"the board has {have[what] / 1024:.0f} KiB" for what in ("flash", "RAM")
+             if need[smallest[what]][what] > have[what]]
     if short:
-        levers = "; ".join(f"{what}: {_LEVERS[what]}" for what in ("flash", "RAM") if what in short_of)
+        levers = "; ".join(f"{what}: {_LEVERS[what]}" for what in ("flash", "RAM")
+                           if need[smallest[what]][what] > have[what])
         raise KitError(f"{board.identifier} cannot hold the deployment as measured in {shown_as}: "
                        + "; ".join(short) + ". Shrink the deployment first (docs/porting.md, 'Memory budget'): "
                        + levers + ".")
-    return headroom
+    lines: list[str] = []
+    for variant in sorted(need, key=lambda v: (need[v]["flash"], v)):
+        spare = {what: have[what] - need[variant][what] for what in ("flash", "RAM")}
+        mark = " (the smallest)" if variant in smallest.values() else ""
+        lines.append(f"{variant}{mark}: " + ", ".join(
+            f"{what} {need[variant][what] / 1024:.1f} of {have[what] / 1024:.0f} KiB "
+            f"({spare[what] / 1024:.1f} KiB spare)" for what in ("flash", "RAM")))
+        over = [f"{-spare[what] / 1024:.1f} KiB of {what}" for what in ("flash", "RAM") if spare[what] < 0]
+        if over:
+            lines.append(f"{variant} does not fit: {' and '.join(over)} short; its build fails until the "
+                         "deployment shrinks (docs/porting.md, 'Memory budget')")
+    return lines
 
 
 def _without_todo(name: str, text: str) -> str:
@@ -520,9 +711,23 @@ def _copy_folder(reference_dir: Path, folder: Path, identifier: str, root: Path,
         say(f"kept: {(folder / other).relative_to(root)} (not in the reference)")
 
 
-def _join_suite(root: Path, identifier: str, say: Callable[[str], None], real: bool = False) -> None:
-    # A real board joins the boards built and not run; a QEMU board every suite
-    for path in [root / BUILD_ONLY_SUITE] if real else twister_files(root):
+def suite_files(root: Path, emulated: bool) -> list[Path]:
+    """The twister files a new board joins: the one rule for both kinds. A
+    QEMU board joins every suite that runs (the deployment's, the kernel
+    floor's, the samples'); a real board only the boards built and not run
+    (BUILD_ONLY_SUITE), which is how `kit compare` and `kit test` tell it is
+    one (cli.is_real_board): a QEMU board listed there would be refused."""
+    build_only = root / BUILD_ONLY_SUITE
+    if not emulated:
+        return [build_only]
+    return [path for path in twister_files(root) if path != build_only]
+
+
+def _join_suite(root: Path, board: ZephyrBoard, say: Callable[[str], None]) -> None:
+    identifier = board.identifier
+    for path in suite_files(root, board.emulated):
+        if not path.is_file():
+            raise KitError(f"{path.relative_to(root)} is missing: a real board joins its platform list")
         before = path.read_text()
         after = add_to_twister_lists(before, identifier)
         name = path.relative_to(root)
@@ -550,11 +755,14 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
     say(f"{board.identifier}: known to {zephyr_version(zephyr)} ({board.platform_file.name}), arch arm")
     for line in check_fit(board, baseline, shown_as):
         say(f"memory: {line}")
-    say(f"memory: an estimate from {reference_dir.name}'s build ({shown_as}); ROM can differ a few % on "
-        "another board, so the real check is this port's own run")
+    smallest = smallest_models(results.load(baseline))
+    named = " and ".join(dict.fromkeys(smallest.values()))
+    say(f"memory: an estimate from {reference_dir.name}'s build ({shown_as}), the board checked against its "
+        f"smallest model, {named}; ROM can differ a few % on another board, so the real check is this port's "
+        "own run")
     _copy_folder(reference_dir, folder, board.identifier, root, say, None if board.emulated else REAL_TODOS)
     if board.emulated:
-        _join_suite(root, board.identifier, say)
+        _join_suite(root, board, say)
         say("next: resolve the TODO(port) headers in "
             f"boards/{folder.name}/, then follow the checklist in docs/porting.md:")
         say(f"  scripts/kit compare --board {board.identifier}")
@@ -565,15 +773,6 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
     (folder / "kit.conf").write_text(with_todo("kit.conf", REAL_KIT_CONF.format(identifier=board.identifier),
                                                reference_dir.name, board.identifier, REAL_TODOS))
     say(f"created: {(folder / 'kit.conf').relative_to(root)} (a real board's: no QEMU icount)")
-    uarts = link_uarts(board.platform_file)
-    if uarts:
-        (folder / "app.overlay").write_text(with_todo("app.overlay", REAL_OVERLAY.format(uart=uarts[0]),
-                                                      reference_dir.name, board.identifier, REAL_TODOS))
-        say(f"created: {(folder / 'app.overlay').relative_to(root)} (ground link on {uarts[0]}, the first UART "
-            f"the board enables besides its console; the others: {', '.join(uarts[1:]) or 'none'})")
-    else:
-        say(f"app.overlay: the board enables no UART besides its console; enable one for the ground link "
-            f"(kit,link-uart) in boards/{folder.name}/app.overlay")
     hal, hals = hal_module(board, zephyr)
     fetch = ""
     if hal is None:
@@ -591,10 +790,40 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
             fetch = "  scripts/setup.sh   (fetches it)"
         say(f"west.yml: {hal.name} {'allow-listed' if fetch else 'was allow-listed'} "
             f"({zephyr_version(zephyr)} pins {hal.revision[:12]})")
-    _join_suite(root, board.identifier, say, real=True)
+    overlay = folder / "app.overlay"
+    uarts = link_uarts(board.platform_file)
+    todo = ""
+    if uarts:
+        overlay.write_text(with_todo("app.overlay", REAL_OVERLAY.format(uart=uarts[0]), reference_dir.name,
+                                     board.identifier, REAL_TODOS))
+        say(f"created: {overlay.relative_to(root)} (ground link on {uarts[0]}, the first UART "
+            f"the board enables besides its console; the others: {', '.join(uarts[1:]) or 'none'})")
+    else:
+        # The board enables its console alone: the reference's overlay would
+        # name a UART this devicetree lacks (a devicetree error), so one of
+        # the SoC's is enabled on the HAL's pins, or the porter is told
+        spare, reason = spare_uart(board, zephyr, root / hal.path if hal is not None else None)
+        if spare is not None:
+            overlay.write_text(with_todo("app.overlay", SPARE_OVERLAY.format(
+                uart=spare.label, tx=spare.tx, rx=spare.rx, tx_pin=spare.pin(spare.tx), rx_pin=spare.pin(spare.rx),
+                pinctrl=spare.pinctrl), reference_dir.name, board.identifier, REAL_TODOS))
+            say(f"created: {overlay.relative_to(root)} (the board enables no UART besides its console: ground "
+                f"link on {spare.label}, enabled there on TX {spare.pin(spare.tx)} and RX {spare.pin(spare.rx)}, "
+                f"pins from {spare.pinctrl}; wire a 3.3 V USB-serial adapter to them)")
+        else:
+            overlay.write_text(with_todo("app.overlay", NO_LINK_OVERLAY.format(reason=reason), reference_dir.name,
+                                         board.identifier, REAL_TODOS))
+            todo = (f"{TODO_MARK} no UART for the ground link: {reason}. Choose one in "
+                    f"boards/{folder.name}/app.overlay (kit,link-uart, with its pins); until then the build stops "
+                    "and says so")
+            say(f"created: {overlay.relative_to(root)} (no ground link chosen)")
+            say(todo)
+    _join_suite(root, board, say)
     say("next: resolve the TODO(port) headers in "
         f"boards/{folder.name}/ (docs/porting.md, 'A real board'), then:")
     if fetch:
         say(fetch)
+    if todo:
+        say(f"  {todo}")
     say(f"  scripts/kit test --board {board.identifier}   (builds every model; nothing runs)")
     return folder

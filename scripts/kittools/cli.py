@@ -182,6 +182,13 @@ def cmd_test(args: argparse.Namespace) -> int:
 
         for board in built_only:
             qemu_lane.append((f"report: {board}, built only", functools.partial(built_report, board)))
+        # Last in the QEMU lane: it runs twister and west builds of its own,
+        # so it waits for the machine rather than share it with the suite's
+        # builds and the ground link's checks (whose time-outs are the host's).
+        # A run for chosen boards (--board) is about those: it leaves it out.
+        if not args.skip_porting and not args.board:
+            qemu_lane.append(("porting: a new QEMU board and a console-only real board scaffolded into a scratch "
+                              "copy", lambda: testing.run_porting_check(log_dir)))
     _host_steps(args, log_dir, host_lane)
     # The device path (twister's device testing, QEMU standing in for a
     # flashed board): its own build and QEMU runs, in the lane beside twister
@@ -419,6 +426,9 @@ def parser() -> argparse.ArgumentParser:
     t.add_argument("--skip-twister", action="store_true")
     t.add_argument("--skip-host", action="store_true")
     t.add_argument("--skip-python", action="store_true")
+    t.add_argument("--skip-porting", action="store_true",
+                   help="leave out the porting step (kit new-board on a new QEMU board, then kit compare on it, and "
+                        "on a real board, then its builds, in a scratch copy; left out with --board)")
     t.add_argument("--update-baseline", action="store_true",
                    help="make this run's results tests/baselines/<board>.json (review and commit the change)")
     t.add_argument("--device-testing", action="store_true",

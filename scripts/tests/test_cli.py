@@ -139,3 +139,28 @@ def test_kit_report_needs_no_workspace(tmp_path, board):
     assert "budget check against" in run.stdout and ": PASS" in run.stdout
     assert "Budget check: PASS" in (tmp_path / "report.md").read_text()
     assert {p.name for p in tmp_path.iterdir()} >= {"report.md", "report.html", "report.json", "report.csv"}
+
+
+def _lanes(monkeypatch, argv: list[str]) -> tuple[list[str], list[str]]:
+    """The step names `kit test argv` would run in its QEMU and host lanes (nothing runs)."""
+    seen: dict[str, list[str]] = {}
+
+    def run_lanes(qemu_lane, host_lane, done=None):  # type: ignore[no-untyped-def]
+        seen["qemu"] = [name for name, _ in qemu_lane]
+        seen["host"] = [name for name, _ in host_lane]
+        return 0
+
+    monkeypatch.setattr(cli, "_run_lanes", run_lanes)
+    monkeypatch.setattr(cli, "check_provisioned", lambda: None)
+    assert cli.main(["test", *argv]) == 0
+    return seen["qemu"], seen["host"]
+
+
+def test_the_porting_step_ends_the_qemu_lane_of_a_full_run(monkeypatch, tmp_path):
+    out = ["--output", str(tmp_path)]
+    qemu, host = _lanes(monkeypatch, [*out])
+    assert qemu[-1].startswith("porting: a new QEMU board and a console-only real board scaffolded into a scratch")
+    assert not any(name.startswith("porting:") for name in host)
+    for argv in (["--skip-porting"], ["--skip-twister"], ["--board", "qemu_cortex_m3"]):
+        qemu, host = _lanes(monkeypatch, [*out, *argv])
+        assert not any(name.startswith("porting:") for name in qemu + host), argv
