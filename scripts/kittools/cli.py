@@ -56,14 +56,15 @@ COMPARISON_SCENARIOS = ("nominal", "load")
 PROFILE_TAG = "profile"
 
 
-def compare_boards(boards: list[str], out_dir: Path) -> tuple[list[Path], bool]:
+def compare_boards(boards: list[str], out_dir: Path, models: tuple[str, ...] = ()) -> tuple[list[Path], bool]:
     """The comparison's scenarios (each model's nominal run and load sweep,
-    played on the suite's builds of tests/deployment) on every board, through twister;
-    returns each board's results file and whether every run passed."""
+    played on the suite's builds of tests/deployment) on every board, of
+    every variant or `models`, through twister; returns each board's results
+    file and whether every run passed."""
     out_dir.mkdir(parents=True, exist_ok=True)
     twister_out = out_dir / "twister"
     tally = testing.run_twister(boards, out_dir, twister_out, scenarios=COMPARISON_SCENARIOS,
-                                exclude_tags=(PROFILE_TAG,))
+                                exclude_tags=(PROFILE_TAG,), models=models)
     testing.make_size_reports(twister_out)  # every board's at once, two builds at a time
     files = []
     for board in boards:
@@ -98,7 +99,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
     check_provisioned()
     out_dir = Path(args.output).resolve()
     with one_at_a_time("compare"):
-        files, passed = compare_boards(boards, out_dir)
+        files, passed = compare_boards(boards, out_dir, tuple(args.model or ()))
         outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())
@@ -182,13 +183,6 @@ def cmd_test(args: argparse.Namespace) -> int:
 
         for board in built_only:
             qemu_lane.append((f"report: {board}, built only", functools.partial(built_report, board)))
-        # Last in the QEMU lane: it runs twister and west builds of its own,
-        # so it waits for the machine rather than share it with the suite's
-        # builds and the ground link's checks (whose time-outs are the host's).
-        # A run for chosen boards (--board) is about those: it leaves it out.
-        if not args.skip_porting and not args.board:
-            qemu_lane.append(("porting: a new QEMU board and a console-only real board scaffolded into a scratch "
-                              "copy", lambda: testing.run_porting_check(log_dir)))
     _host_steps(args, log_dir, host_lane)
     # The device path (twister's device testing, QEMU standing in for a
     # flashed board): its own build and QEMU runs, in the lane beside twister
@@ -196,6 +190,14 @@ def cmd_test(args: argparse.Namespace) -> int:
         host_lane.append((f"device testing: twister's device harness, QEMU standing in for a flashed "
                           f"{testing.STAND_IN_BOARD} ({testing.STAND_IN_MODEL})",
                           lambda: testing.run_qemu_device(log_dir)))
+    # The porting path: its own twister and west builds, in the lane beside
+    # the suite's twister (which leaves a core idle at its start and between
+    # its builds' runs), done before the ground link's checks start (their
+    # time-outs are the host's). A run for chosen boards (--board) is about
+    # those: it leaves it out.
+    if not args.skip_twister and not args.skip_porting and not args.board:
+        host_lane.append((f"porting: a new QEMU board and a console-only real board scaffolded into a scratch "
+                          f"copy ({', '.join(testing.PORTING_MODELS)})", lambda: testing.run_porting_check(log_dir)))
     return _run_lanes(qemu_lane, host_lane, host_lane_done)
 
 
@@ -411,6 +413,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--board", action="append",
                    help="board to compare on (repeatable; default: every platform of the suite)")
     p.add_argument("--output", default=str(KIT_ROOT / "build" / "compare"), help="build folders, logs, results")
+    variants.add_model_option(p, "the variants to compare (repeatable; default: every one)", repeatable=True)
     p.set_defaults(func=cmd_compare)
     r = sub.add_parser("report", help="report of results files (build/compare/<board>/comparison.json)")
     r.add_argument("results", nargs="+", help="results files (JSON, docs/results.md), one per board")

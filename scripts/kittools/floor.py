@@ -24,6 +24,8 @@ from . import console
 
 #: Twister configurations of tests/floor start with this
 PREFIX = "floor."
+#: Where the floor's twister scenarios are (their names start with PREFIX)
+SCENARIO_FILES = "tests/floor/*/testcase.yaml"
 #: The path shape of a model's dispatch, by how its record says it runs its
 #: tasks (TASK `context`): cooperative slices of a thread-less loop woken from
 #: WFI, or threads, the tick thread handing the tick to a rate-group thread
@@ -75,3 +77,11 @@ def zephyr_records(builds: list[Path]) -> list[console.Record]:
         return [console.Record("ZEPHYR", match.groupdict())
                 for match in map(_ZEPHYR_FIGURE.match, text.splitlines()) if match]
     return []
+
+
+def scenarios(root: Path) -> list[str]:
+    """The floor's twister scenarios, as its testcase files name them."""
+    import yaml
+
+    return sorted(name for path in root.glob(SCENARIO_FILES)
+                  for name in (yaml.safe_load(path.read_text()).get("tests") or {}) if name.startswith(PREFIX))

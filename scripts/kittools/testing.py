@@ -206,10 +206,12 @@ class RunWatcher:
 
 
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
-                scenarios: tuple[str, ...] = (), exclude_tags: tuple[str, ...] = ()) -> Tally:
+                scenarios: tuple[str, ...] = (), exclude_tags: tuple[str, ...] = (),
+                models: tuple[str, ...] = ()) -> Tally:
     """The suite (tests/) on every board: one build per execution model and
     board, each playing every scenario, or only `scenarios` (pytest's -k),
-    but for the test suites tagged with one of `exclude_tags`;
+    but for the test suites tagged with one of `exclude_tags`; with
+    `models`, only those variants' builds (and the kernel floor's);
     two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
@@ -222,6 +224,9 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
         command += ["--pytest-args=-k", "--pytest-args=" + " or ".join(scenarios)]
     for tag in exclude_tags:
         command += ["--exclude-tag", tag]
+    # Twister's -s takes a scenario by its name alone
+    for scenario in [f"kit.{model}" for model in models] + (floor.scenarios(KIT_ROOT) if models else []):
+        command += ["-s", scenario]
     tally = _play(command, log_dir / "twister.log", out_dir)
     say_built_only(out_dir)
     say_profiles(out_dir)
@@ -781,7 +786,10 @@ PORTING_QEMU_BOARD = "mps3/corstone300/an547"
 #: A real board whose devicetree enables its console alone among the UARTs:
 #: scaffolded (a UART of its SoC on the HAL's pins), then built with no edit
 PORTING_REAL_BOARD = "nucleo_l152re"
-PORTING_REAL_MODELS = ("baremetal", "rtos")
+#: The variants the porting step compares and builds: the execution models
+#: (the folders with a Kconfig.model), not their policies: a board port is
+#: the same for every policy of a model, and CI's time is shared
+PORTING_MODELS = ("baremetal", "rtos")
 #: Under the output folder; the same path every run, so that its builds hit
 #: ccache (CCACHE_BASEDIR is the copy: paths hash relative to it)
 PORTING_DIR = "porting"
@@ -821,9 +829,9 @@ def scratch_environment(scratch: Path) -> dict[str, str]:
 def run_porting_check(log_dir: Path) -> Tally:
     """`kit new-board` as a new user meets it, in a scratch copy of the
     clone (<log_dir>/porting/scratch): PORTING_QEMU_BOARD scaffolded, then
-    `kit compare` on it (every model, nominal and load) with no edit;
+    `kit compare` on it (PORTING_MODELS, nominal and load) with no edit;
     PORTING_REAL_BOARD (its devicetree enables the console alone)
-    scaffolded, then built for PORTING_REAL_MODELS with no edit. One count
+    scaffolded, then built for PORTING_MODELS with no edit. One count
     per scaffold, per compared scenario (twister's), per build."""
     out = log_dir / PORTING_DIR
     scratch = out / "scratch"
@@ -855,7 +863,8 @@ def run_porting_check(log_dir: Path) -> Tally:
     if qemu_ok:
         compare_out = scratch / "build" / "compare"
         compared = step(f"kit compare --board {PORTING_QEMU_BOARD}",
-                        [*kit, "compare", "--board", PORTING_QEMU_BOARD, "--output", str(compare_out)],
+                        [*kit, "compare", "--board", PORTING_QEMU_BOARD, "--output", str(compare_out),
+                         *(f"--model={model}" for model in PORTING_MODELS)],
                         out / "compare.log")
         report = compare_out / "twister" / "twister.json"
         played = twister_tally(report) if report.is_file() else Tally()
@@ -867,7 +876,7 @@ def run_porting_check(log_dir: Path) -> Tally:
                    out / "new-board-real.log")
     count(real_ok)
     if real_ok:
-        for model in PORTING_REAL_MODELS:
+        for model in PORTING_MODELS:
             build = scratch / "build" / "porting" / f"{board_dir_name(PORTING_REAL_BOARD)}.{model}"
             count(step(f"west build -b {PORTING_REAL_BOARD} -T tests/boards/board.{model}",
                        ["west", "build", "-b", PORTING_REAL_BOARD, "-d", str(build), "-T",
