@@ -32,6 +32,7 @@ from . import (
     report,
     results,
     serial_sweep,
+    shards,
     sizing,
     style,
     sweep,
@@ -113,6 +114,10 @@ def _budget(args: argparse.Namespace) -> budget.Budget:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
+    if args.merge:
+        return _merge(args)
+    if not args.results:
+        raise KitError("kit report needs results files, or --merge DIR... (the output folders of kit test --subset)")
     sources = [Path(r).resolve() for r in args.results]
     out_dir = Path(args.output).resolve() if args.output else sources[0].parent
     baseline = Path(args.baseline).resolve() if args.baseline else None
@@ -129,9 +134,54 @@ def cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+#: kit test --quick: the scenarios every model plays on the reference board
+QUICK_SCENARIOS = ("nominal", "faults", "load")
+#: ... and the integration suite's test each ground station runs (pytest -k)
+QUICK_GROUND_TEST = "test_noop_completes_with_its_events"
+
+
+def subset_of(text: str | None) -> tuple[int, int] | None:
+    """K/N of kit test --subset as (K, N); KitError unless 1 <= K <= N."""
+    if text is None:
+        return None
+    try:
+        k, n = (int(x) for x in text.split("/"))
+    except ValueError:
+        k = n = 0
+    if not 1 <= k <= n:
+        raise KitError(f"--subset {text}: expected K/N with 1 <= K <= N (this machine's share K of N, as "
+                       "twister's --subset takes it), e.g. --subset 1/2 and --subset 2/2 on two machines")
+    return k, n
+
+
+def _merge(args: argparse.Namespace) -> int:
+    """kit report --merge DIR...: the shards of one split run (kit test
+    --subset K/N, each K once) joined per board into its results file and
+    report, judged against its baseline as a single run is."""
+    if args.results or args.baseline:
+        raise KitError("--merge takes the shards' output folders only: each board is judged against its "
+                       "baseline in tests/baselines")
+    joined = shards.merge([Path(d).resolve() for d in args.merge])
+    out_dir = Path(args.output).resolve() if args.output else KIT_ROOT / "build" / "merged"
+    total = testing.Tally()
+    for board, shard in sorted(joined.items()):
+        data = shard.results()
+        if shard.built_only is not None:
+            total.add(testing.write_built_only(data, board, out_dir))
+        else:
+            total.add(testing.judge(data, board, out_dir, _budget(args)))
+    print(f"total: {total.passed} passed, {total.failed} failed")
+    return 0 if total.failed == 0 and total.passed > 0 else 1
+
+
 def cmd_test(args: argparse.Namespace) -> int:
     if args.device_testing or args.hardware_map:
         return _device_test(args)
+    if args.quick:
+        return _quick_test(args)
+    subset = subset_of(args.subset)
+    if subset and args.update_baseline:
+        raise KitError("--update-baseline needs the whole run on one machine: a shard holds part of each board")
     # The real boards are built and not run (tests/boards): no budget, no
     # ground link, nothing to play
     boards = [b for b in args.board if not is_real_board(b)] if args.board else testing.suite_boards()
@@ -139,6 +189,7 @@ def cmd_test(args: argparse.Namespace) -> int:
                   else testing.suite_boards(testing.BUILD_ONLY_SUITE))
     check_provisioned()
     log_dir = Path(args.output).resolve()
+    shards.start(log_dir, args.subset)
     # Two lanes. The QEMU lane: twister, then what reads its builds. The host
     # lane needs none of them; it runs beside twister (whose start and last
     # runs leave a core idle), and the ground link's checks wait for it to
@@ -155,18 +206,23 @@ def cmd_test(args: argparse.Namespace) -> int:
             size_reports.result()
             return testing.check_budget(board, log_dir, _budget(args), args.update_baseline)
 
+        def shard(board: str, built: bool) -> testing.Tally:
+            size_reports.result()
+            return testing.write_shard(board, log_dir, built)
+
         def determinism() -> testing.Tally:
             threading.Thread(target=_settle, args=(size_reports, functools.partial(
                 testing.make_size_reports, background=True)), daemon=True).start()
-            return testing.check_determinism(log_dir)
+            return testing.check_determinism(log_dir, required=not subset)
 
         built = f"; built only: {', '.join(built_only)}" if built_only else ""
-        qemu_lane.append((f"twister suite under QEMU ({', '.join(boards)}{built})",
-                          lambda: testing.run_twister(boards + built_only, log_dir)))
+        share = f", twister's share {args.subset}" if subset else ""
+        qemu_lane.append((f"twister suite under QEMU ({', '.join(boards)}{built}{share})",
+                          lambda: testing.run_twister(boards + built_only, log_dir, subset=args.subset)))
         # Before the budget: the board's report takes the serial-load sweep from it
         def ground() -> testing.Tally:
             host_lane_done.wait()
-            return testing.run_integration(log_dir)
+            return testing.run_integration(log_dir, required=not subset)
 
         if boards:  # what reads the runs: none on a board only built
             qemu_lane.append(("determinism: twister's binaries run again (size reports in the background)",
@@ -174,7 +230,11 @@ def cmd_test(args: argparse.Namespace) -> int:
             qemu_lane.append(("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
                               ground))
         for board in boards:
-            qemu_lane.append((f"budget: {board} results against its baseline", functools.partial(budget, board)))
+            if subset:  # judged once the shards are joined (kit report --merge)
+                qemu_lane.append((f"shard: {board}, this share's part", functools.partial(shard, board, False)))
+            else:
+                qemu_lane.append((f"budget: {board} results against its baseline",
+                                  functools.partial(budget, board)))
 
         def built_report(board: str) -> testing.Tally:
             if boards:  # their size reports are made beside the determinism runs
@@ -182,11 +242,19 @@ def cmd_test(args: argparse.Namespace) -> int:
             return testing.report_built_only(board, log_dir)
 
         for board in built_only:
-            qemu_lane.append((f"report: {board}, built only", functools.partial(built_report, board)))
-    _host_steps(args, log_dir, host_lane)
+            if subset:
+                qemu_lane.append((f"shard: {board}, built only, this share's part",
+                                  functools.partial(shard, board, True)))
+            else:
+                qemu_lane.append((f"report: {board}, built only", functools.partial(built_report, board)))
+    # A split run shares out the steps beside twister: the host's to the
+    # first shard, the device and porting paths to the last
+    first, last = (subset[0] == 1, subset[0] == subset[1]) if subset else (True, True)
+    if first:
+        _host_steps(args, log_dir, host_lane)
     # The device path (twister's device testing, QEMU standing in for a
     # flashed board): its own build and QEMU runs, in the lane beside twister
-    if not args.skip_twister and testing.STAND_IN_BOARD in boards:
+    if not args.skip_twister and testing.STAND_IN_BOARD in boards and last:
         host_lane.append((f"device testing: twister's device harness, QEMU standing in for a flashed "
                           f"{testing.STAND_IN_BOARD} ({testing.STAND_IN_MODEL})",
                           lambda: testing.run_qemu_device(log_dir)))
@@ -195,9 +263,37 @@ def cmd_test(args: argparse.Namespace) -> int:
     # its builds' runs), done before the ground link's checks start (their
     # time-outs are the host's). A run for chosen boards (--board) is about
     # those: it leaves it out.
-    if not args.skip_twister and not args.skip_porting and not args.board:
+    if not args.skip_twister and not args.skip_porting and not args.board and last:
         host_lane.append((f"porting: a new QEMU board and a console-only real board scaffolded into a scratch "
                           f"copy ({', '.join(testing.PORTING_MODELS)})", lambda: testing.run_porting_check(log_dir)))
+    return _run_lanes(qemu_lane, host_lane, host_lane_done)
+
+
+def _quick_test(args: argparse.Namespace) -> int:
+    """kit test --quick: every model (or --model's) on the reference board,
+    its nominal run, faults and load sweep, then one ground station per
+    model answering a NO_OP; beside them, the host and tooling tests. No
+    kernel floor, soak, determinism, fuzzing, serial sweep, porting or
+    budget: those are the full run's."""
+    if args.board or args.subset or args.update_baseline:
+        raise KitError("--quick is the reference board's short run: without --board, --subset or "
+                       "--update-baseline (those are the full run's)")
+    check_provisioned()
+    log_dir = Path(args.output).resolve()
+    models = tuple(args.model or variants.names())
+    host_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
+    host_lane_done = threading.Event()
+    _host_steps(args, log_dir, host_lane)
+    qemu_lane: list[tuple[str, Callable[[], testing.Tally]]] = []
+    if not args.skip_twister:
+        def stations() -> testing.Tally:
+            host_lane_done.wait()  # the stations' time-outs are the host's
+            return testing.run_stations(log_dir, QUICK_GROUND_TEST)
+
+        qemu_lane.append((f"twister: {', '.join(models)} on {REFERENCE_BOARD} ({', '.join(QUICK_SCENARIOS)})",
+                          lambda: testing.run_twister([REFERENCE_BOARD], log_dir, scenarios=QUICK_SCENARIOS,
+                                                      models=models, with_floor=False)))
+        qemu_lane.append(("ground link: a NO_OP through fprime-gds on each model", stations))
     return _run_lanes(qemu_lane, host_lane, host_lane_done)
 
 
@@ -416,7 +512,11 @@ def parser() -> argparse.ArgumentParser:
     variants.add_model_option(p, "the variants to compare (repeatable; default: every one)", repeatable=True)
     p.set_defaults(func=cmd_compare)
     r = sub.add_parser("report", help="report of results files (build/compare/<board>/comparison.json)")
-    r.add_argument("results", nargs="+", help="results files (JSON, docs/results.md), one per board")
+    r.add_argument("results", nargs="*", help="results files (JSON, docs/results.md), one per board")
+    r.add_argument("--merge", nargs="+", metavar="DIR",
+                   help="join the shards of a split run (the --output folders of kit test --subset K/N, every K "
+                        "once) into each board's results file and report, judged against its baseline "
+                        "(default output: build/merged)")
     r.add_argument("--baseline", help="results file to diff the first against; with it, a budget check sets the "
                                       "exit code")
     r.add_argument("--output", help="folder for report.* (default: the results file's folder)")
@@ -426,6 +526,12 @@ def parser() -> argparse.ArgumentParser:
                    help="board to run the suite on (repeatable; default: every platform of the suite, "
                         "tests/deployment/testcase.yaml)")
     t.add_argument("--output", default=str(KIT_ROOT / "build" / "test-logs"), help="logs and reports")
+    t.add_argument("--quick", action="store_true",
+                   help=f"the short run: every model (or --model's) on {REFERENCE_BOARD}, nominal, faults and "
+                        "load, a NO_OP through fprime-gds per model, host and tooling tests; no budget")
+    t.add_argument("--subset", metavar="K/N",
+                   help="this machine's share K of a full run split across N (twister's --subset); join the "
+                        "shards' --output folders with kit report --merge")
     t.add_argument("--skip-twister", action="store_true")
     t.add_argument("--skip-host", action="store_true")
     t.add_argument("--skip-python", action="store_true")

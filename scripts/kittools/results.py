@@ -7,11 +7,12 @@ The schema is documented in docs/results.md; `compare.results(...).to_json()` wr
 from __future__ import annotations
 
 import json
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from . import compare, conditions, console, floor, model, modules, serial_sweep, sizing, symbols
-from .footprint import measure
+from .footprint import Footprint, measure
 from .workspace import KitError
 
 REQUIRED_METRICS = (model.ROM, model.RAM)
@@ -162,42 +163,102 @@ FLOOD_FILE = "flood.json"
 LINK_RECORD_FILES = (SERIAL_SWEEP_FILE, FLOOD_FILE)
 
 
-def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> model.Results:
-    """Results of a twister run of tests/deployment on one board, in the
-    results-file schema: per build (one per variant), the nominal scenario's
-    records, footprint and modules, plus the sweep records of the load
-    scenario when it played, those of the serial-load sweep and the flood
-    `kit test` ran on the build (under `log_dir`), and the kernel floor of
-    the model's dispatch path from the run's tests/floor builds
-    (kittools.floor)."""
-    found: list[compare.VariantData] = []
+@dataclass
+class Played:
+    """One build's part of a board's results, before the kernel floor is
+    attached: what `from_twister` reads of the build (its runs, sizes,
+    layers, configuration) and of the ground link's checks on it. A shard of
+    the suite (kit test --subset) keeps these, and the floor's records, apart
+    (kittools.shards): the build and the floor's builds may be in different
+    shards, and `assemble` joins them as a single run would."""
+
+    platform: str
+    variant: str
+    footprint: Footprint
+    records: list[console.Record]  #: the nominal run's, then the load sweep's
+    link_records: list[console.Record]  #: the ground link's (serial sweep, flood)
+    rom_modules: dict[str, int]
+    ram_modules: dict[str, int]
+    build: dict[str, Any]
+    symbols: dict[str, dict[str, int]]
+    sizing: dict[str, Any]
+
+
+@dataclass
+class Floors:
+    """The kernel floor's records of a board's floor builds: FLOOR per path,
+    Zephyr's own figures for the threaded paths."""
+
+    paths: dict[str, console.Record] = field(default_factory=dict)
+    zephyr: list[console.Record] = field(default_factory=list)
+
+    def add(self, other: Floors) -> None:
+        self.paths.update(other.paths)
+        self.zephyr = self.zephyr or other.zephyr
+
+
+def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple[list[Played], Floors]:
+    """What a twister run of tests/deployment made on one board: per build
+    that played the nominal scenario, its Played (with the load scenario's
+    sweep records when it played, and those of the serial-load sweep and the
+    flood `kit test` ran on it under `log_dir`); and the floor builds'
+    records (kittools.floor)."""
     builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
               if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]
     reports = modules.reports([build for _, build, _ in builds])
     floor_builds = [build for _, build in suite_builds(twister_out, board, floor.PREFIX)]
-    floors, zephyr_figures = floor.records(floor_builds), floor.zephyr_records(floor_builds)
+    floors = Floors(floor.records(floor_builds), floor.zephyr_records(floor_builds))
+    found = []
     for (platform, build, run), (rom, ram) in zip(builds, reports, strict=True):
         sweep = played(build, "load")
         if sweep is not None:
             run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
-        # The kernel floor of the model's dispatch path, on this board
-        path = floor.path_of(run)
-        if path in floors:
-            run.records.append(floors[path])
-        if path == floor.PATH_OF_CONTEXT["thread"]:  # Zephyr's own figures, for the threaded paths
-            run.records += zephyr_figures
+        link_records: list[console.Record] = []
         if log_dir is not None:
             for file_name in LINK_RECORD_FILES:
                 records_file = integration_logs(log_dir, platform, build.name) / file_name
                 if records_file.is_file():
-                    run.records += serial_sweep.records_of(records_file)
-        found.append(compare.VariantData(
-            run.variant, measure(build), run, modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
+                    link_records += serial_sweep.records_of(records_file)
+        found.append(Played(
+            platform, run.variant, measure(build), run.records, link_records,
+            modules.breakdown(rom), modules.breakdown(ram), conditions.read(build),
             {kind: symbols.table(symbols.leaves(report), symbols.SYMBOL_FLOOR)
              for kind, report in (("rom", rom), ("ram", ram))},
             sizing.measure(build, [r.fields for r in run.of_kind("QUEUE")]).to_json()))
+    return found, floors
+
+
+def assemble(found: list[Played], floors: Floors, board: str) -> model.Results:
+    """A board's results from its builds' parts and its floor: each
+    variant's records are its runs', then the kernel floor of its dispatch
+    path on this board (and Zephyr's own figures for the threaded paths),
+    then the ground link's."""
+    if not found:
+        raise KitError(f"no nominal scenario played on {board} (no {RUNS_DIR}/nominal.log in its builds)")
+    variants = []
+    for part in sorted(found, key=lambda p: p.variant):
+        run = console.Run(list(part.records))
+        path = floor.path_of(run)
+        if path in floors.paths:
+            run.records.append(floors.paths[path])
+        if path == floor.PATH_OF_CONTEXT["thread"]:
+            run.records += floors.zephyr
+        run.records += part.link_records
+        variants.append(compare.VariantData(part.variant, part.footprint, run, part.rom_modules,
+                                            part.ram_modules, part.build, part.symbols, part.sizing))
+    return compare.results(variants)
+
+
+def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> model.Results:
+    """Results of a twister run of tests/deployment on one board, in the
+    results-file schema (collect, then assemble): per build (one per
+    variant), the nominal scenario's records, footprint and modules, plus
+    the sweep records of the load scenario when it played, those of the
+    serial-load sweep and the flood `kit test` ran on the build (under
+    `log_dir`), and the kernel floor of the model's dispatch path from the
+    run's tests/floor builds (kittools.floor)."""
+    found, floors = collect(twister_out, board, log_dir)
     if not found:
         raise KitError(f"twister run in {twister_out} played no nominal scenario on {board} "
                        f"(no {RUNS_DIR}/nominal.log in its builds)")
-    found.sort(key=lambda d: d.variant)
-    return compare.results(found)
+    return assemble(found, floors, board)

@@ -32,6 +32,7 @@ from . import (
     results,
     runner,
     serial_sweep,
+    shards,
     sizing,
     sweep,
     symbols,
@@ -207,12 +208,13 @@ class RunWatcher:
 
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
                 scenarios: tuple[str, ...] = (), exclude_tags: tuple[str, ...] = (),
-                models: tuple[str, ...] = ()) -> Tally:
+                models: tuple[str, ...] = (), with_floor: bool = True, subset: str | None = None) -> Tally:
     """The suite (tests/) on every board: one build per execution model and
     board, each playing every scenario, or only `scenarios` (pytest's -k),
     but for the test suites tagged with one of `exclude_tags`; with
-    `models`, only those variants' builds (and the kernel floor's);
-    two builds or QEMU runs at a time (icount timing does not depend on the
+    `models`, only those variants' builds (and the kernel floor's, unless
+    not `with_floor`); with `subset` (K/N), twister's own share K of N of
+    the configurations (kit test --subset); two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
     for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{floor.CONSOLE_LOG}"):  # the kernel floor's records
@@ -225,8 +227,11 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     for tag in exclude_tags:
         command += ["--exclude-tag", tag]
     # Twister's -s takes a scenario by its name alone
-    for scenario in [f"kit.{model}" for model in models] + (floor.scenarios(KIT_ROOT) if models else []):
+    for scenario in [f"kit.{model}" for model in models] + (floor.scenarios(KIT_ROOT) if models and with_floor
+                                                             else []):
         command += ["-s", scenario]
+    if subset:
+        command += ["--subset", subset]
     tally = _play(command, log_dir / "twister.log", out_dir)
     say_built_only(out_dir)
     say_profiles(out_dir)
@@ -392,16 +397,19 @@ def recorded_hashes(twister_out: Path) -> dict[tuple[str, Path, str], str]:
     return hashes
 
 
-def check_determinism(log_dir: Path, jobs: int = 2) -> Tally:
+def check_determinism(log_dir: Path, jobs: int = 2, required: bool = True) -> Tally:
     """Play each scenario that printed a sample hash once more on its build
     under QEMU, `jobs` at a time, through the build's own run target (the
     console from its QEMU pipe): under icount the raw timing samples, and so
-    their hash, must be identical to the suite's run."""
+    their hash, must be identical to the suite's run. Not `required` (a
+    shard of a split run): a run that played none checks none."""
     runs = [(platform, build, scenario, expected)
             for (platform, build, scenario), expected in sorted(recorded_hashes(TWISTER_OUT).items())
             # the soak: ten more virtual minutes per board; it checks itself
             if scenario != "soak"]
     if not runs:
+        if not required:
+            return Tally()
         raise KitError("the suite recorded no sample hash: nothing to compare")
 
     def rerun(platform: str, build: Path, scenario: str) -> str | None:
@@ -441,7 +449,28 @@ INTEGRATION_JOBS = 1
 RAW_LINK_JOBS = 2
 
 
-def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: int = RAW_LINK_JOBS) -> Tally:
+def ground_builds(required: bool = True) -> list[tuple[str, Path]]:
+    """(platform, build) of every build of the last twister run that can
+    play the ground scenario; none is an error where `required`."""
+    builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
+              if ground.serves_ground(build)]
+    if not builds and required:
+        raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
+    return builds
+
+
+def run_stations(log_dir: Path, select: str) -> Tally:
+    """The integration suite's tests matching `select` (pytest's -k)
+    through fprime-gds on every ground build of the last twister run, one
+    build at a time (kit test --quick: the NO_OP)."""
+    tally = Tally()
+    for platform, build in ground_builds():
+        tally.add(station_checks(platform, build, log_dir, select))
+    return tally
+
+
+def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: int = RAW_LINK_JOBS,
+                    required: bool = True) -> Tally:
     """The ground-link checks of every build of the suite, each booted under
     QEMU into its ground scenario: first tests/integration (F´'s
     integration-test API, through fprime-gds's pytest plugin, with
@@ -450,11 +479,9 @@ def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: 
     serial-load sweep, `raw_link_jobs` builds at a time. Two builds never share a QEMU
     pipe, a link socket or a GDS transport (each station's is its own). The
     kit's own runner, not twister's pytest harness: that harness owns one
-    console and knows nothing of a second serial port or a GDS."""
-    builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
-              if ground.serves_ground(build)]
-    if not builds:
-        raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
+    console and knows nothing of a second serial port or a GDS. Not
+    `required` (a shard of a split run): a run that made none checks none."""
+    builds = ground_builds(required)
     tally = Tally()
     for checks, workers in ((station_checks, jobs), (raw_link_checks, raw_link_jobs)):
         with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
@@ -468,16 +495,17 @@ def _ground_name(platform: str, build: Path) -> str:
     return f"{platform.replace('/', '_')}_{build.name}"
 
 
-def station_checks(platform: str, build: Path, log_dir: Path) -> Tally:
+def station_checks(platform: str, build: Path, log_dir: Path, select: str | None = None) -> Tally:
     """One build's check that needs the host to itself: the integration
-    suite through fprime-gds."""
+    suite through fprime-gds (its tests matching `select`, pytest's -k)."""
     name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
     xml = logs / "pytest.xml"
     started = time.monotonic()
     with ground.GroundStation(build, logs) as station:
         _run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
-              *station.client_arguments(), "--logs", str(logs / "api"), f"--junitxml={xml}"],
+              *(["-k", select] if select else []), *station.client_arguments(), "--logs", str(logs / "api"),
+              f"--junitxml={xml}"],
              logs / "pytest.log")
         console_text = station.console()
     (logs / "console.log").write_text(console_text + "\n")
@@ -644,9 +672,15 @@ def check_budget(board: str, log_dir: Path, limits: budget.Budget, update_baseli
     update_baseline: make this run the baseline instead (conditions and
     metrics, no raw records; review the diff).
     Writes <log_dir>/<board folder>/results.json, then its report."""
+    return judge(results.from_twister(TWISTER_OUT, board, log_dir), board, log_dir, limits, update_baseline)
+
+
+def judge(data: Results, board: str, log_dir: Path, limits: budget.Budget, update_baseline: bool = False) -> Tally:
+    """A QEMU board's results (of one run, or of a split run's shards
+    joined: kit report --merge) against its baseline: see check_budget.
+    Writes <log_dir>/<board folder>/results.json, then its report."""
     folder = check_board(board)
     baseline_path = BASELINES / f"{folder}.json"
-    data = results.from_twister(TWISTER_OUT, board, log_dir)
     out_dir = log_dir / folder
     out_dir.mkdir(parents=True, exist_ok=True)
     current = out_dir / "results.json"
@@ -684,7 +718,11 @@ def report_built_only(board: str, log_dir: Path) -> Tally:
     """A real board's results (its builds only: ROM and RAM, by layer) and
     their report, in <log_dir>/<board folder>/ like a QEMU board's; no
     baseline, no budget (nothing ran). One count: the results were made."""
-    data = results.built_only(TWISTER_OUT, board)
+    return write_built_only(results.built_only(TWISTER_OUT, board), board, log_dir)
+
+
+def write_built_only(data: Results, board: str, log_dir: Path) -> Tally:
+    """A real board's results file and report (see report_built_only)."""
     out_dir = log_dir / check_board(board)
     out_dir.mkdir(parents=True, exist_ok=True)
     (out_dir / "results.json").write_text(json.dumps(data.to_json(), indent=2) + "\n")
@@ -692,6 +730,26 @@ def report_built_only(board: str, log_dir: Path) -> Tally:
 
     report.write(data, out_dir / "report")
     print(f"[kit]   {board}: built only, ROM and RAM by layer: {out_dir / 'report' / 'report.html'}", flush=True)
+    return Tally(passed=1)
+
+
+def write_shard(board: str, log_dir: Path, built_only: bool = False) -> Tally:
+    """What this shard of a split run (kit test --subset) made of `board`:
+    <log_dir>/<board folder>/shard.json for kit report --merge, which judges
+    the board once every shard's parts are joined. One count where the
+    shard made anything of the board; none where twister gave it nothing."""
+    if built_only:
+        if not results.suite_builds(TWISTER_OUT, board, results.BUILD_ONLY_PREFIX):
+            return Tally()
+        shard = shards.BoardShard(board, built_only=results.built_only(TWISTER_OUT, board))
+    else:
+        found, floors = results.collect(TWISTER_OUT, board, log_dir)
+        if not found and not floors.paths and not floors.zephyr:
+            return Tally()
+        shard = shards.BoardShard(board, found, floors)
+    path = shards.write(shard, log_dir)
+    made = [p.variant for p in shard.played] + list(shard.built_only.variants if shard.built_only else ())
+    print(f"[kit]   {board}: this shard's part ({', '.join(made) or 'kernel floor only'}): {path}", flush=True)
     return Tally(passed=1)
 
 

@@ -165,3 +165,17 @@ def test_the_porting_step_ends_the_host_lane_of_a_full_run(monkeypatch, tmp_path
     for argv in (["--skip-porting"], ["--skip-twister"], ["--board", "qemu_cortex_m3"]):
         qemu, host = _lanes(monkeypatch, [*out, *argv])
         assert not any(name.startswith("porting:") for name in qemu + host), argv
+
+
+@pytest.mark.parametrize("arguments, message", [
+    (["test", "--subset", "3/2"], "--subset 3/2: expected K/N with 1 <= K <= N"),
+    (["test", "--subset", "half"], "--subset half: expected K/N"),
+    (["test", "--subset", "1/2", "--update-baseline"], "--update-baseline needs the whole run on one machine"),
+    (["test", "--quick", "--board", "mps2/an385"], "--quick is the reference board's short run"),
+    (["report", "--merge", "a", "--baseline", "b"], "--merge takes the shards' output folders only"),
+    (["report"], "kit report needs results files, or --merge DIR"),
+])
+def test_the_tiers_bad_input_is_one_clear_error(arguments, message, capsys):
+    assert cli.main(arguments) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and message in err[0]
