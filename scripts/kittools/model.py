@@ -125,6 +125,12 @@ def label(metric: MetricId) -> str:
     return " ".join(w for w in words if w) + (f" ({unit})" if unit else "")
 
 
+#: What a baseline keeps of a variant's records: its sweeps' points and
+#: breaks (the load sweep's SWEEP and BREAK, the serial sweep's SERIAL), which
+#: the budget's breaking points are read from (kittools.budget.earlier_breaks)
+BASELINE_RECORD_KINDS = ("SWEEP", "BREAK", "SERIAL")
+
+
 @dataclass
 class Variant:
     """One variant's results on one board."""
@@ -159,6 +165,8 @@ class Variant:
         return kinds.pop() if len(kinds) == 1 else None
 
     def to_json(self, with_records: bool = True) -> dict[str, Any]:
+        """Its JSON; without records, a baseline's: only the records the
+        budget's breaking points come from (BASELINE_RECORD_KINDS)."""
         out: dict[str, Any] = {"passed": self.passed, "build": self.build, "modules": self.modules,
                                "footprint": self.footprint, "metrics": {m.key: v for m, v in self.metrics.items()}}
         if self.sizing:
@@ -167,6 +175,8 @@ class Variant:
             out["symbols"] = self.symbols
         if with_records:
             out["records"] = self.records
+        else:
+            out["records"] = [r for r in self.records if r.get("kind") in BASELINE_RECORD_KINDS]
         return out
 
 

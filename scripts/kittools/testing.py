@@ -755,7 +755,8 @@ def write_shard(board: str, log_dir: Path, built_only: bool = False) -> Tally:
 
 def write_baseline(data: Results, path: Path) -> None:
     """A board's baseline: the conditions and every variant's metrics (with
-    its build, modules and footprint), not the raw console records."""
+    its build, modules and footprint) and its sweeps' records (the breaking
+    points the budget holds), not the rest of the console records."""
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(data.to_json(with_records=False), indent=2) + "\n")
 
