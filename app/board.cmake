@@ -52,7 +52,9 @@ if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
 endif()
 set(KIT_BOARD_DIR "${KIT_ROOT}/boards/${KIT_BOARD}")
 set(KIT_BOARD_TARGET "${KIT_BOARD_SPEC}" CACHE STRING "Board target of this kit build" FORCE)
-foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig Tables.fpp app.overlay)
+# (A Tables.fpp is optional: the deployment's table, app/Top/Tables.fpp,
+# serves every board that has none.)
+foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig app.overlay)
     if(NOT EXISTS "${KIT_BOARD_DIR}/${KIT_BOARD_FILE}")
         message(FATAL_ERROR "kit: boards/${KIT_BOARD}/${KIT_BOARD_FILE} is missing; every port has one "
             "(see docs/porting.md).")
