@@ -24,12 +24,11 @@ endfunction()
 kit_require_workspace("${KIT_ROOT}/deps/zephyr/CMakeLists.txt")
 
 # --- Board ------------------------------------------------------------
-# Every board the kit runs on has a folder in boards/ (docs/porting.md): the
-# board target with '/' as '_' (mps2/an385: mps2_an385), else the board's
-# name alone, covering all its qualifiers (qemu_cortex_m3/ti_lm3s6965).
-# scripts/kittools/workspace.py applies the same rule. Zephyr splits
-# "mps2/an385" into BOARD and BOARD_QUALIFIERS, and F´'s sub-builds inherit
-# the split BOARD: they read the cache entry the main configuration leaves.
+# Every board the kit runs on has a folder in boards/ (docs/porting.md),
+# found by the rule of app/board_folder.cmake. Zephyr splits "mps2/an385"
+# into BOARD and BOARD_QUALIFIERS, and F´'s sub-builds inherit the split
+# BOARD: they read the cache entry the main configuration leaves.
+include("${CMAKE_CURRENT_LIST_DIR}/board_folder.cmake")
 if(DEFINED FPRIME_SUB_BUILD_TARGETS AND DEFINED KIT_BOARD_TARGET)
     set(KIT_BOARD_SPEC "${KIT_BOARD_TARGET}")
 elseif(DEFINED BOARD)
@@ -39,11 +38,8 @@ elseif(DEFINED ENV{BOARD})
 else()
     message(FATAL_ERROR "kit: no board given. Use west build -b qemu_cortex_m3 ...")
 endif()
-string(REPLACE "/" "_" KIT_BOARD "${KIT_BOARD_SPEC}")
-if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
-    string(REGEX REPLACE "/.*$" "" KIT_BOARD "${KIT_BOARD_SPEC}")
-endif()
-if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
+kit_board_folder(KIT_BOARD "${KIT_BOARD_SPEC}" "${KIT_ROOT}/boards")
+if(NOT KIT_BOARD)
     file(GLOB KIT_PORTED_BOARDS RELATIVE "${KIT_ROOT}/boards" "${KIT_ROOT}/boards/*")
     list(FILTER KIT_PORTED_BOARDS EXCLUDE REGEX "\\.")
     message(FATAL_ERROR
@@ -52,7 +48,9 @@ if(NOT IS_DIRECTORY "${KIT_ROOT}/boards/${KIT_BOARD}")
 endif()
 set(KIT_BOARD_DIR "${KIT_ROOT}/boards/${KIT_BOARD}")
 set(KIT_BOARD_TARGET "${KIT_BOARD_SPEC}" CACHE STRING "Board target of this kit build" FORCE)
-foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig Tables.fpp app.overlay)
+# (A Tables.fpp is optional: the deployment's table, app/Top/Tables.fpp,
+# serves every board that has none.)
+foreach(KIT_BOARD_FILE IN ITEMS kit.conf Kconfig.defconfig app.overlay)
     if(NOT EXISTS "${KIT_BOARD_DIR}/${KIT_BOARD_FILE}")
         message(FATAL_ERROR "kit: boards/${KIT_BOARD}/${KIT_BOARD_FILE} is missing; every port has one "
             "(see docs/porting.md).")
@@ -81,26 +79,6 @@ if(EXISTS "${KIT_BOARD_DIR}/hal")
 endif()
 
 # --- Toolchain --------------------------------------------------------
-# Default: Debian's arm-none-eabi GCC through Zephyr's gnuarmemb variant, with
-# the toolchain's own picolibc (the only route to libstdc++ there). A Zephyr
-# SDK is used instead whenever the user selects it.
-if(NOT DEFINED ZEPHYR_TOOLCHAIN_VARIANT AND NOT DEFINED ENV{ZEPHYR_TOOLCHAIN_VARIANT}
-   AND NOT DEFINED ENV{ZEPHYR_SDK_INSTALL_DIR})
-    find_program(KIT_ARM_GCC arm-none-eabi-gcc)
-    if(NOT KIT_ARM_GCC)
-        message(FATAL_ERROR
-            "kit: no ARM toolchain. Install Debian's gcc-arm-none-eabi, picolibc-arm-none-eabi and "
-            "libstdc++-arm-none-eabi-picolibc (scripts/setup.sh does), or set ZEPHYR_SDK_INSTALL_DIR "
-            "to use a Zephyr SDK.")
-    endif()
-    get_filename_component(KIT_ARM_GCC_BIN "${KIT_ARM_GCC}" DIRECTORY)
-    get_filename_component(KIT_ARM_GCC_ROOT "${KIT_ARM_GCC_BIN}" DIRECTORY)
-    set(ZEPHYR_TOOLCHAIN_VARIANT gnuarmemb CACHE STRING "Zephyr toolchain variant")
-    set(GNUARMEMB_TOOLCHAIN_PATH "${KIT_ARM_GCC_ROOT}" CACHE PATH "arm-none-eabi toolchain root")
-endif()
-if(ZEPHYR_TOOLCHAIN_VARIANT STREQUAL "gnuarmemb" OR "$ENV{ZEPHYR_TOOLCHAIN_VARIANT}" STREQUAL "gnuarmemb")
-    set(TOOLCHAIN_HAS_PICOLIBC ON CACHE BOOL "toolchain provides picolibc")
-    # Kconfig reads this from the environment; without it picolibc's TLS errno
-    # lands in an orphan .tbss section.
-    set(ENV{ZEPHYR_TOOLCHAIN_SUPPORTS_THREAD_LOCAL_STORAGE} y)
-endif()
+# The kit's choice (app/toolchain.cmake, which the shell scripts read too)
+include("${CMAKE_CURRENT_LIST_DIR}/toolchain.cmake")
+kit_toolchain()

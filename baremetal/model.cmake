@@ -6,7 +6,10 @@
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/config")
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/Os")
 
-set(KIT_MODEL_SOURCES "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp")
+set(KIT_MODEL_SOURCES
+    "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp"
+    "${CMAKE_CURRENT_LIST_DIR}/ModelChecks.cpp"  # build-time checks that the topology fits this model
+)
 set(KIT_MODEL_IMPLEMENTATIONS
     Kit_Os_Task_BaremetalTimed  # fprime-baremetal's cooperative task, slices timed (baremetal/Os)
     Os_Mutex_Stub        # one context: nothing to exclude (also the condition variable)

@@ -4,7 +4,10 @@
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/config")
 add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/Os")
 
-set(KIT_MODEL_SOURCES "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp")
+set(KIT_MODEL_SOURCES
+    "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp"
+    "${CMAKE_CURRENT_LIST_DIR}/ModelChecks.cpp"  # build-time checks that the topology fits this model
+)
 set(KIT_MODEL_IMPLEMENTATIONS
     Kit_Os_Task_ZephyrPriority  # fprime-zephyr's task, with F´ priorities mapped onto Zephyr's
     Os_Mutex_Zephyr             # k_mutex / k_condvar

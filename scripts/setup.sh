@@ -118,16 +118,23 @@ provide_googletest() {
   say "googletest: $dst -> $src"
 }
 
+# The toolchain the builds will use: app/toolchain.cmake's choice (the one
+# rule; scripts/env.sh applies it too). It prints the default's settings,
+# nothing when a toolchain is chosen already, and fails when there is none.
 check_toolchain() {
-  local cc
-  if [ -n "${ZEPHYR_SDK_INSTALL_DIR:-}" ] || [ "${ZEPHYR_TOOLCHAIN_VARIANT:-}" = zephyr ]; then
-    say "toolchain: Zephyr SDK (${ZEPHYR_SDK_INSTALL_DIR:-found by CMake})"
+  local choice root
+  command -v qemu-system-arm >/dev/null || die "qemu-system-arm not found: install qemu-system-arm"
+  choice=$("$VENV/bin/cmake" -P "$KIT_ROOT/app/toolchain.cmake") \
+    || die "no toolchain (above): install Debian's gcc-arm-none-eabi, or set ZEPHYR_SDK_INSTALL_DIR"
+  if [ -z "$choice" ]; then
+    say "toolchain: ${ZEPHYR_TOOLCHAIN_VARIANT:-zephyr} (chosen: ZEPHYR_TOOLCHAIN_VARIANT=${ZEPHYR_TOOLCHAIN_VARIANT:-}" \
+      "ZEPHYR_SDK_INSTALL_DIR=${ZEPHYR_SDK_INSTALL_DIR:-}), $(qemu-system-arm --version | head -1)"
     return
   fi
-  cc=$(command -v arm-none-eabi-gcc) || die "arm-none-eabi-gcc not found: install Debian's gcc-arm-none-eabi, or set ZEPHYR_SDK_INSTALL_DIR"
-  [ -f /usr/lib/picolibc/arm-none-eabi/picolibc.specs ] || die "picolibc for arm-none-eabi not found: install picolibc-arm-none-eabi"
-  command -v qemu-system-arm >/dev/null || die "qemu-system-arm not found: install qemu-system-arm"
-  say "toolchain: $($cc --version | head -1) (gnuarmemb), $(qemu-system-arm --version | head -1)"
+  root=$(printf '%s\n' "$choice" | sed -n 's/^GNUARMEMB_TOOLCHAIN_PATH=//p')
+  [ -f "$root/lib/picolibc/arm-none-eabi/picolibc.specs" ] \
+    || die "picolibc for arm-none-eabi not found under $root: install picolibc-arm-none-eabi"
+  say "toolchain: $("$root/bin/arm-none-eabi-gcc" --version | head -1) (gnuarmemb), $(qemu-system-arm --version | head -1)"
 }
 
 install_debian_packages

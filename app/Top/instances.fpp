@@ -2,8 +2,9 @@
 
 module Kit {
 
-  # The priority and stack table (Kit.Priorities, Kit.Stacks) is the
-  # board's: boards/<board>/Tables.fpp.
+  # The priority and stack table (Kit.Priorities, Kit.Stacks) is in
+  # Tables.fpp beside this file; a board whose measurements differ
+  # replaces it with its own boards/<board>/Tables.fpp.
 
   # Queue depths: a rate group holds one pending cycle (a second is a slip);
   # the services absorb a burst of a few messages.
@@ -12,7 +13,7 @@ module Kit {
     @ The dispatcher's queue holds commands from both uplinks (each in
     @ flight takes one slot: the command, then its answer), and its 10 Hz
     @ telemetry call. It asserts when full: the ground's share is capped
-    @ (Link.commandsInFlight, checked in app/src/ModelChecks.cpp), which
+    @ (Link.commandsInFlight, checked in app/src/TopologyChecks.cpp), which
     @ leaves room for the call and the scripted uplink
     constant cmdDisp = 8
     @ Events arrive in bursts where a command is dispatched in its

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  CooperativeQueue.cpp
+// \brief  The queue itself; DefaultCooperativeQueue.cpp makes it F´'s
+//         Os::Queue (apart, so that host tests link it beside F´'s own)
 // ======================================================================
 #include "baremetal/Os/CooperativeQueue.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
 
 #include <Fw/Types/Assert.hpp>
-#include <Os/Delegate.hpp>
 
 #include <zephyr/kernel.h>
 
@@ -105,11 +106,3 @@ Os::QueueHandle* CooperativeQueue::getHandle() {
 }
 
 }  // namespace Kit
-
-namespace Os {
-
-QueueInterface* QueueInterface::getDelegate(QueueHandleStorage& aligned_new_memory) {
-    return Os::Delegate::makeDelegate<QueueInterface, Kit::CooperativeQueue, QueueHandleStorage>(aligned_new_memory);
-}
-
-}  // namespace Os

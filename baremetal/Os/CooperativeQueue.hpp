@@ -16,7 +16,7 @@
 #ifndef KIT_COOPERATIVEQUEUE_HPP
 #define KIT_COOPERATIVEQUEUE_HPP
 
-#include "app/src/SlotQueue.hpp"
+#include "modules/kit-os/SlotQueue.hpp"
 
 #include <Os/Queue.hpp>
 

@@ -18,7 +18,7 @@ namespace Kit {
 struct SliceRecord {
     Os::TaskInterface::taskRoutine routine;
     void* argument;               //!< the routine's own argument (F´'s task wrapper, inside the component)
-    FwTaskPriorityType priority;  //!< F´'s: higher is more urgent (the board's Tables.fpp)
+    FwTaskPriorityType priority;  //!< F´'s: higher is more urgent (app/Top/Tables.fpp)
     U32 slices;
     U64 cycles;
     U32 maxCycles;

@@ -15,7 +15,7 @@
 #ifndef KIT_ZEPHYRQUEUE_HPP
 #define KIT_ZEPHYRQUEUE_HPP
 
-#include "app/src/SlotQueue.hpp"
+#include "modules/kit-os/SlotQueue.hpp"
 
 #include <zephyr/kernel.h>
 #include <Os/Queue.hpp>

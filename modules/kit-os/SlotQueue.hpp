@@ -12,7 +12,9 @@
 //
 // The order is an array of slot indices kept sorted; an insert or a removal
 // shifts at most `depth` entries (a rate group's queue holds 2).
-// Header-only plain C++: both models' OS layers and host tests use it.
+// Header-only plain C++: both models' OS layers and host tests use it. It
+// lives in modules/kit-os/, the OS code the models share, so that neither
+// model's folder nor the deployment (app/) holds what only the OS layers use.
 // ======================================================================
 #ifndef KIT_SLOTQUEUE_HPP
 #define KIT_SLOTQUEUE_HPP

@@ -2,7 +2,7 @@
 // The message store under the kit's queues: F´'s order (highest priority
 // first, FIFO within a priority), sizes kept per message, slots reused.
 #include <gtest/gtest.h>
-#include "app/src/SlotQueue.hpp"
+#include "modules/kit-os/SlotQueue.hpp"
 
 namespace {
 

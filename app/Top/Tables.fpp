@@ -1,8 +1,13 @@
 # SPDX-License-Identifier: Apache-2.0
-# The priority and stack table of the kit's deployment on nucleo_f401re,
-# used by app/Top/instances.fpp: qemu_cortex_m3's (scaffolded from it), the
-# same code on the same architecture; re-measure the stacks from a run on
-# the board ("KIT STACK" lines).
+# The priority and stack table of the kit's deployment (app/Top/instances.fpp),
+# on every board: the priorities are the deployment's design, not a board's,
+# and the stacks were measured on qemu_cortex_m3 and mps2/an385 (the suite's
+# runs) and are used unchanged on nucleo_f401re (the same code on the same
+# architecture; re-measure from a run on the board, "KIT STACK" lines).
+# A board whose measurements differ replaces this file with its own
+# boards/<board>/Tables.fpp (the whole table: FPP has no per-constant
+# override); app/Top/CMakeLists.txt picks it, and the model's build-time
+# checks (<model>/ModelChecks.cpp) hold it to the same rules.
 module Kit {
 
   # Written once in F´'s convention: a higher number is more urgent. The
@@ -16,7 +21,7 @@ module Kit {
   # queue (comStatusIn), which asserts when full, and a feeder that runs
   # between its taking a message and that answer can fill the slot it freed
   # (mps2/an385 rtos did, under uplink fuzzing and the load sweep; checked in
-  # app/src/ModelChecks.cpp). Telemetry is above events: F´'s TlmChan asserts
+  # rtos/ModelChecks.cpp). Telemetry is above events: F´'s TlmChan asserts
   # when its 10 Hz calls fill its queue, where the event logger drops (a
   # flood of events starved it on mps2/an385 rtos at 300 commands/s).
   module Priorities {
@@ -35,7 +40,7 @@ module Kit {
 
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
   # stack and ignores them). Zephyr's thread pool has one slot size for all:
-  # CONFIG_DYNAMIC_THREAD_STACK_SIZE, set in Kconfig.defconfig beside this file. A nominal
+  # CONFIG_DYNAMIC_THREAD_STACK_SIZE, set in each board's Kconfig.defconfig. A nominal
   # run's high-water marks ("KIT STACK" lines) top out at 1324 B (cmdDisp),
   # but an F´ assert in a command handler needs more than 1792 B of the
   # dispatcher's stack: mps2/an385's MPU guard caught that overflow, which

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// ======================================================================
+// \title  ActiveStacks.hpp
+// \brief  The stack table's entry of every active instance this build has
+//
+// The priority and stack table (app/Top/Tables.fpp, or a board's override
+// in boards/<board>/Tables.fpp) names every instance that can be active; a
+// build where the rate groups or the dispatcher are passive has fewer tasks.
+// Each execution model sizes its tasks from this list (rtos/ModelChecks.cpp
+// checks it against Zephyr's thread pool), so it is written once, here.
+// ======================================================================
+#ifndef KIT_ACTIVESTACKS_HPP
+#define KIT_ACTIVESTACKS_HPP
+
+#include "app/Top/FppConstantsAc.hpp"
+#include "app/Top/KitTopology.hpp"
+
+namespace Kit {
+
+//! The stack of every active instance, as the table gives it
+constexpr FwSizeType ACTIVE_STACKS[] = {
+#if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+    Stacks::rg1kHz,  Stacks::rg100Hz, Stacks::rg10Hz,  // passive rate groups run on the caller's stack
+#endif
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    Stacks::cmdDisp,  // the passive dispatcher runs on its sender's stack
+#endif
+    Stacks::events,  Stacks::tlmSend, Stacks::load,   Stacks::comQueue,
+};
+constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
+
+//! The largest stack of the table's active instances
+constexpr FwSizeType largestActiveStack() {
+    FwSizeType largest = 0;
+    for (FwSizeType i = 0; i < ACTIVE_STACK_ENTRIES; i++) {
+        largest = ACTIVE_STACKS[i] > largest ? ACTIVE_STACKS[i] : largest;
+    }
+    return largest;
+}
+
+}  // namespace Kit
+
+#endif

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// ======================================================================
+// \title  baremetal/ModelChecks.cpp
+// \brief  Build-time checks that the topology fits the baremetal model
+//
+// The topology's active instances, the TaskRunner's fixed table and the
+// budgeted policy's threshold (baremetal/Kconfig.model) against the
+// priority table (app/Top/Tables.fpp, or a board's override) are sized in
+// different places; a mismatch would show only at run time (a task that
+// never runs, a dispatcher deferred until its queue asserts). These asserts
+// stop the build instead. (app/src/TopologyChecks.cpp checks what holds in
+// every model.)
+// ======================================================================
+#include "app/Top/FppConstantsAc.hpp"
+#include "app/Top/KitTopology.hpp"
+// After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
+#include <zephyr/autoconf.h>
+
+#include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
+
+namespace Kit {
+namespace {
+
+// Every active instance is one task of the TaskRunner's fixed table
+static_assert(ACTIVE_INSTANCE_COUNT <= Os::Baremetal::TASK_CAPACITY,
+              "more active instances than fprime-baremetal's TaskRunner holds (TASK_CAPACITY)");
+
+#if defined(CONFIG_KIT_BAREMETAL_POLICY_BUDGETED)
+// The budgeted policy never defers a task of at least this priority: the
+// rate groups, the dispatcher (its queue asserts when full) and the
+// downlink (Betaflight's serial task) must be among them, the background
+// load (what the policy is for) must not
+static_assert(static_cast<int>(Priorities::rg10Hz) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
+                  static_cast<int>(Priorities::cmdDisp) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
+                  static_cast<int>(Priorities::comQueue) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY,
+              "CONFIG_KIT_BUDGET_CRITICAL_PRIORITY would let the budgeted policy defer a rate group, the "
+              "dispatcher or the downlink (Tables.fpp: app/Top, or the board's)");
+static_assert(static_cast<int>(Priorities::load) < CONFIG_KIT_BUDGET_CRITICAL_PRIORITY,
+              "CONFIG_KIT_BUDGET_CRITICAL_PRIORITY leaves the background load cycle-locked: nothing to budget");
+#endif
+
+}  // namespace
+}  // namespace Kit

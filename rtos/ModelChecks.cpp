@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: Apache-2.0
+// ======================================================================
+// \title  rtos/ModelChecks.cpp
+// \brief  Build-time checks that the topology fits the RTOS model
+//
+// The topology's active instances, the priority and stack table
+// (app/Top/Tables.fpp, or a board's override), Zephyr's thread pool and the
+// tick thread's priority are sized in different places; a mismatch would
+// show only at run time (a task that never starts, a stack that does not
+// fit its pool slot, a feeder that overfills the downlink's queue). These
+// asserts stop the build instead. (app/src/TopologyChecks.cpp checks what
+// holds in every model.)
+// ======================================================================
+#include "app/Top/ActiveStacks.hpp"
+#include "app/Top/FppConstantsAc.hpp"
+#include "app/Top/KitTopology.hpp"
+#include "rtos/Os/PriorityMap.hpp"
+// After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
+#include <zephyr/autoconf.h>
+
+namespace Kit {
+namespace {
+
+// ComQueue answers each of its sends through its own queue, which asserts
+// when full: no thread that feeds that queue may run between its taking a
+// message and that answer (app/Top/Tables.fpp says why)
+static_assert(static_cast<int>(Priorities::comQueue) > static_cast<int>(Priorities::events) &&
+                  static_cast<int>(Priorities::comQueue) > static_cast<int>(Priorities::tlmSend),
+              "Tables.fpp (app/Top, or the board's): the downlink (comQueue) must be more urgent than the events "
+              "and telemetry services that feed it");
+// The tick thread sits just below the fastest rate group and above every
+// other task (rtos/Kconfig.model says why): a handed-over 1 kHz cycle runs
+// at once, and the tick still hands every slower group its cycle first
+static_assert(zephyrPriority(Priorities::rg1kHz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >= 0 &&
+                  zephyrPriority(Priorities::rg1kHz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) <
+                      CONFIG_MAIN_THREAD_PRIORITY &&
+                  zephyrPriority(Priorities::rg100Hz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >
+                      CONFIG_MAIN_THREAD_PRIORITY,
+              "Tables.fpp (app/Top, or the board's) and CONFIG_MAIN_THREAD_PRIORITY: only the fastest rate group "
+              "(rg1kHz) may be more urgent than the tick thread");
+// fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
+static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,
+              "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model) must give one slot per active instance");
+static_assert(largestActiveStack() <= CONFIG_DYNAMIC_THREAD_STACK_SIZE,
+              "a stack of Tables.fpp (app/Top, or the board's) is larger than a thread pool slot "
+              "(CONFIG_DYNAMIC_THREAD_STACK_SIZE, boards/<board>/Kconfig.defconfig)");
+
+}  // namespace
+}  // namespace Kit
