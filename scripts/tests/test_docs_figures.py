@@ -60,6 +60,9 @@ def mismatches(text: str, where: str) -> list[str]:
     """Every marked figure of `text` that is not its baseline's value."""
     found = []
     for number, line in enumerate(text.splitlines(), start=1):
+        if line.count("<!-- figure") != len(MARKER.findall(line)):
+            found.append(f"{where}:{number}: a figure marker without its figure right before it, or malformed "
+                         "(NUMBER<!-- figure BOARD VARIANT KEY -->)")
         for match in MARKER.finditer(line):
             try:
                 want = expected(match["board"], match["variant"], match["key"], match["text"])
@@ -75,7 +78,8 @@ def mismatches(text: str, where: str) -> list[str]:
 def test_every_marked_figure_is_the_baselines() -> None:
     problems = [p for page in PAGES for p in mismatches(page.read_text(), str(page.relative_to(ROOT)))]
     assert not problems, "\n".join(problems)
-    assert sum(len(MARKER.findall(page.read_text())) for page in PAGES) >= 10  # the README's table at least
+    count = sum(len(MARKER.findall(page.read_text())) for page in PAGES)
+    assert 10 <= count <= 40, f"{count} figures: a few well-chosen ones, not every number of the report"
 
 
 def test_a_wrong_figure_or_an_unknown_key_is_found() -> None:
@@ -87,6 +91,25 @@ def test_a_wrong_figure_or_an_unknown_key_is_found() -> None:
     assert "where the baseline says" in mismatches(wrong, "t")[0]
     assert "has no metric" in mismatches(f"1<!-- figure {board} rtos no.such.metric -->", "t")[0]
     assert "no baseline" in mismatches("1<!-- figure no_such_board rtos rom -->", "t")[0]
+    assert "without its figure" in mismatches(f"1.5 ms<!-- figure {board} rtos footprint.rom.bytes -->", "t")[0]
+    assert mismatches(f"{int(rom)}<!-- figure {board} rtos footprint.rom.bytes -->", "t"), "thousands separators"
+
+
+def test_decimals_and_breaking_points_are_read_as_the_text_shows_them() -> None:
+    board = "qemu_cortex_m3"
+    variant = _baseline(board)["variants"]["baremetal"]
+    p99 = float(variant["metrics"]["rg.rg1kHz.latency.p99_us"])
+    for decimals in (0, 1, 2):
+        shown = f"{p99:,.{decimals}f}"
+        assert mismatches(f"{shown}<!-- figure {board} baremetal rg.rg1kHz.latency.p99_us -->", "t") == []
+    assert mismatches(f"{p99 + 1:.1f}<!-- figure {board} baremetal rg.rg1kHz.latency.p99_us -->", "t")
+    level = next(r["level"] for r in variant["records"]
+                 if r["kind"] == "BREAK" and r["axis"] == "slice" and r["rg"] == "rg1kHz")
+    other = "none" if level != "none" else "0"
+    assert mismatches(f"{level}<!-- figure {board} baremetal break:slice:rg1kHz -->", "t") == []
+    assert "where the baseline says" in mismatches(f"{other}<!-- figure {board} baremetal break:slice:rg1kHz -->",
+                                                   "t")[0]
+    assert "BREAK records" in mismatches(f"1<!-- figure {board} baremetal break:nosuchaxis:rg1kHz -->", "t")[0]
 
 
 @pytest.mark.parametrize("page", PAGES, ids=lambda p: str(p.relative_to(ROOT)))
