@@ -10,7 +10,8 @@ board folder, variant, and a metric key of the baseline (or
 `break:AXIS:RATE_GROUP`, the load sweep's breaking point of that group on
 that axis: its BREAK record). The text must show the baseline's value as
 written: bytes and counts with thousands separators, microseconds to the
-decimals the text shows.
+decimals the text shows. A marker with no figure right before it fails
+too, and the pages quote a few figures (10 to 30), not the whole report.
 """
 
 from __future__ import annotations
