@@ -24,24 +24,13 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from . import (
-    ablation,
-    budget,
-    console,
-    ground,
-    report,
-    results,
-    serial_sweep,
-    shards,
-    sizing,
-    style,
-    sweep,
-    symbols,
-    testing,
-    variants,
-)
-from .board import REFERENCE_BOARD, new_board
-from .workspace import KIT_ROOT, KitError, check_board, check_provisioned, one_at_a_time
+from kittools import console, sweep, variants
+from kittools.boards.scaffold import REFERENCE_BOARD, new_board
+from kittools.link import ground, serial_sweep
+from kittools.report import writer
+from kittools.sizes import ablation, sizing, symbols
+from kittools.suite import budget, results, shards, style, testing
+from kittools.workspace import KIT_ROOT, KitError, check_board, check_provisioned, one_at_a_time
 
 
 def _say(message: str) -> None:
@@ -101,7 +90,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
     out_dir = Path(args.output).resolve()
     with one_at_a_time("compare"):
         files, passed = compare_boards(boards, out_dir, tuple(args.model or ()))
-        outcome = report.write_from_files(files, out_dir, None, budget.Budget(), _say)
+        outcome = writer.write_from_files(files, out_dir, None, budget.Budget(), _say)
     print()
     print((out_dir / "report.md").read_text())
     _say(f"results: {', '.join(str(f) for f in files)}")
@@ -121,7 +110,7 @@ def cmd_report(args: argparse.Namespace) -> int:
     sources = [Path(r).resolve() for r in args.results]
     out_dir = Path(args.output).resolve() if args.output else sources[0].parent
     baseline = Path(args.baseline).resolve() if args.baseline else None
-    outcome = report.write_from_files(sources, out_dir, baseline, _budget(args), _say)
+    outcome = writer.write_from_files(sources, out_dir, baseline, _budget(args), _say)
     for path in outcome.files[:4]:
         _say(f"written: {path}")
     if baseline is not None:

@@ -8,7 +8,8 @@ import time
 
 import pytest
 
-from kittools import cli, runner, workspace
+from kittools import cli, workspace
+from kittools.build import runner
 from kittools.workspace import KitError
 
 

@@ -4,8 +4,8 @@ import os
 
 import pytest
 
-from kittools import results, testing
 from kittools.model import Results
+from kittools.suite import results, testing
 from kittools.workspace import KitError
 
 
@@ -114,8 +114,9 @@ def test_a_baseline_holds_metrics_and_load_breaking_points_not_the_runs_records(
     (the breaking points the budget holds, read back from the file as CI
     reads it), not the rest of the console, nor the serial axes' (host-paced:
     they do not repeat)."""
-    from kittools import budget, compare, console, results
-    from kittools.footprint import Footprint
+    from kittools import console, metrics
+    from kittools.sizes.memory import Footprint
+    from kittools.suite import budget, results
 
     from sample_console import console_log
 
@@ -132,8 +133,8 @@ def test_a_baseline_holds_metrics_and_load_breaking_points_not_the_runs_records(
         for v in ("baremetal", "rtos"):
             run = console.parse(console_log(v))
             run.records += point("slice", 50, slips_at_50) + point("slice", 75, 3) + point("noise", 50, slips_at_50)
-            runs.append(compare.VariantData(v, Footprint(1000, 500, 262144, 65536), run))
-        return compare.results(runs)
+            runs.append(metrics.VariantData(v, Footprint(1000, 500, 262144, 65536), run))
+        return metrics.results(runs)
 
     data = made(0)
     path = tmp_path / "baselines" / "board.json"
