@@ -10,7 +10,7 @@ import pytest
 
 from kittools import cli, metrics, model, workspace
 from kittools.boards import scaffold
-from kittools.suite import testing
+from kittools.suite import platforms
 from kittools.workspace import KitError
 
 SUITE = """# the suite
@@ -120,7 +120,7 @@ def _kit(tmp_path: Path, footprint: dict[str, tuple[int, int]] = FOOTPRINT) -> P
     (root / "app").mkdir()
     (root / "app" / "sample.yaml").write_text("sample:\n  name: kit\ncommon:\n  platform_allow:\n"
                                               "    - qemu_cortex_m3\n")
-    # The real boards' list, as the kit has one: cli.is_real_board reads it
+    # The real boards' list, as the kit has one: platforms.is_real_board reads it
     (root / "tests" / "boards").mkdir()
     (root / "tests" / "boards" / "testcase.yaml").write_text(BOARDS_SUITE)
     (root / "tests" / "floor" / "paths").mkdir(parents=True)
@@ -379,9 +379,9 @@ def test_a_qemu_board_joins_the_qemu_suites_and_not_the_real_boards_list(tmp_pat
     # ... so that the next step it prints, kit compare on it, is not refused as a real board's
     (root / "boards" / "nucleo_other").mkdir()  # the listed real board's port
     monkeypatch.setattr(workspace, "BOARDS", root / "boards")
-    monkeypatch.setattr(testing, "BUILD_ONLY_SUITE", root / "tests" / "boards" / "testcase.yaml")
-    assert not cli.is_real_board("mps2/an385") and cli.is_real_board("nucleo_other")
-    cli.check_runs_here("mps2/an385")
+    monkeypatch.setattr(platforms, "BUILD_ONLY_SUITE", root / "tests" / "boards" / "testcase.yaml")
+    assert not platforms.is_real_board("mps2/an385") and platforms.is_real_board("nucleo_other")
+    platforms.check_runs_here("mps2/an385")
 
 
 # --- the kit's own lookup of a board folder ---------------------------------

@@ -13,6 +13,7 @@ library is imported here or by what it imports.
 
 from __future__ import annotations
 
+import argparse
 from dataclasses import dataclass, field
 
 from kittools import model, sweep
@@ -157,3 +158,8 @@ def earlier_breaks(now: model.Variant, before: model.Variant) -> list[str]:
             said = f"held through the sweep to {swept}" if was is None else f"broke at {was}"
             found.append(f"breaking point, {name}: {level}, earlier than the baseline ({said})")
     return found
+
+
+def of_options(args: argparse.Namespace) -> Budget:
+    """The limits kit report and kit test were given (--rom-budget, --ram-budget, --p99-budget)."""
+    return Budget(rom_pct=args.rom_budget, ram_pct=args.ram_budget, p99_pct=args.p99_budget)

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 from kittools.workspace import KIT_ROOT, KitError
 
 if TYPE_CHECKING:
-    from kittools.suite.testing import Tally
+    from kittools.suite.counts import Tally
 
 # The pinned formatter; the same as clang-format==... in scripts/requirements.txt.
 CLANG_FORMAT_VERSION = "20.1.8"
@@ -108,8 +108,8 @@ def clang_format_check(root: Path) -> list[Path]:
 def run_style_check(root: Path = KIT_ROOT) -> Tally:
     """The style check as one test of `kit test`: passed if every file is clean;
     else failed, with each unformatted file and the command that fixes it."""
-    # The suite's count; imported here, as testing needs nothing of this module
-    from kittools.suite.testing import Tally
+    # The suite's count; imported here, as the suite needs nothing of this module
+    from kittools.suite.counts import Tally
 
     unclean = clang_format_check(root)
     for path in unclean:
