@@ -4,7 +4,7 @@
 // entries left 16 spare, 12 B each, 192 B). The dispatcher asserts at
 // registration when a command has no entry, so a new command needs a larger
 // table: `scripts/kit test` says so first, from the build's dictionary
-// (kittools.sizing), before anything boots.
+// (kittools.sizes.sizing), before anything boots.
 // Sequence tracking: commands in flight from the uplink at once.
 #ifndef CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 #define CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_

@@ -7,7 +7,7 @@
 // it past the 32 this once held, unnoticed until the sizing advice counted
 // them), three more with passive rate groups, three fewer with the passive
 // dispatcher; `scripts/kit test` fails when a build's dictionary outgrows it
-// (kittools.sizing). The slots only spread the search: fewer than the
+// (kittools.sizes.sizing). The slots only spread the search: fewer than the
 // components with channels (13) costs time, not correctness.
 #ifndef TLMCHANIMPLCFG_HPP_
 #define TLMCHANIMPLCFG_HPP_

@@ -11,7 +11,7 @@
 // (Timing.MEASURE_SEGMENT), the main loop stops at the next hyperperiod,
 // measures the requested segment under whatever load the ground applies
 // (commands up the link, or Load.SET_DOWNLINK's packets down it) and prints
-// its SWEEP lines, then serves on. scripts/kittools/serial_sweep.py drives it.
+// its SWEEP lines, then serves on. scripts/kittools/link/serial_sweep.py drives it.
 
 #include "app/Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"

@@ -84,7 +84,7 @@ def cpu_share(task: str) -> MetricId:
 
 
 def floor_latency(stat: str) -> MetricId:
-    """The kernel floor of the model's dispatch path (kittools.floor), in µs."""
+    """The kernel floor of the model's dispatch path (kittools.suite.floor), in µs."""
     return MetricId("floor", "kernel", "latency", stat, "us")
 
 
@@ -150,9 +150,9 @@ class Variant:
     build: dict[str, Any] = field(default_factory=dict)
     modules: dict[str, dict[str, int]] = field(default_factory=dict)
     footprint: dict[str, int] = field(default_factory=dict)
-    #: rom/ram -> symbol -> bytes (kittools.symbols; smaller symbols summed per layer)
+    #: rom/ram -> symbol -> bytes (kittools.sizes.symbols; smaller symbols summed per layer)
     symbols: dict[str, dict[str, int]] = field(default_factory=dict)
-    #: kittools.sizing: tables against the dictionary and the run, and the ports' cost
+    #: kittools.sizes.sizing: tables against the dictionary and the run, and the ports' cost
     sizing: dict[str, Any] = field(default_factory=dict)
 
     def metric(self, metric: MetricId) -> float | None:

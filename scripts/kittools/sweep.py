@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The load sweeps of a variant, from its SWEEP and BREAK records: the
 background-load axes (app/scenarios/load.cpp) and the serial-load axes
-(app/scenarios/ground.cpp, driven by kittools.serial_sweep). Each axis has
+(app/scenarios/ground.cpp, driven by kittools.link.serial_sweep). Each axis has
 its unit (`us` of computation, `cmd/s` up the link, `pkt/s` down it);
 docs/results.md describes the records."""
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .workspace import KIT_ROOT, VARIANTS, KitError
+from kittools.workspace import KIT_ROOT, VARIANTS, KitError
 
 VARIANTS_FILE = KIT_ROOT / "app" / "variants.yaml"
 #: The setting that picks a variant's execution model: CONFIG_KIT_MODEL_<MODEL>=y

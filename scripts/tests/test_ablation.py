@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 import re
 
-from kittools import ablation
+from kittools.sizes import ablation
 from kittools.workspace import KIT_ROOT
 
 

@@ -8,7 +8,10 @@ import time
 
 import pytest
 
-from kittools import cli, runner, workspace
+from kittools import cli, workspace
+from kittools.build import runner
+from kittools.commands import test as test_command
+from kittools.suite import plan, platforms
 from kittools.workspace import KitError
 
 
@@ -29,8 +32,8 @@ def test_a_real_board_is_refused_where_the_deployment_must_run(command, tmp_path
 
 
 def test_a_real_board_is_known_however_its_target_is_spelled():
-    assert cli.is_real_board("nucleo_f401re") and cli.is_real_board("nucleo_f401re/stm32f401xe")
-    assert not cli.is_real_board("qemu_cortex_m3") and not cli.is_real_board("mps2/an385")
+    assert platforms.is_real_board("nucleo_f401re") and platforms.is_real_board("nucleo_f401re/stm32f401xe")
+    assert not platforms.is_real_board("qemu_cortex_m3") and not platforms.is_real_board("mps2/an385")
 
 
 def test_unprovisioned_workspace_is_one_clear_error(tmp_path, monkeypatch, capsys):
@@ -120,11 +123,12 @@ class NoWorkspace(MetaPathFinder):
 
 sys.meta_path.insert(0, NoWorkspace())
 from kittools import cli, workspace
+from kittools.commands import compare, test
 
 def unprovisioned(*_args, **_kwargs):
     raise workspace.KitError("the workspace is not provisioned (forced by the test)")
 
-workspace.check_provisioned = cli.check_provisioned = unprovisioned
+workspace.check_provisioned = compare.check_provisioned = test.check_provisioned = unprovisioned
 workspace.environment = unprovisioned
 sys.exit(cli.main(sys.argv[1:]))
 """
@@ -145,13 +149,13 @@ def _lanes(monkeypatch, argv: list[str]) -> tuple[list[str], list[str]]:
     """The step names `kit test argv` would run in its QEMU and host lanes (nothing runs)."""
     seen: dict[str, list[str]] = {}
 
-    def run_lanes(qemu_lane, host_lane, done=None):  # type: ignore[no-untyped-def]
-        seen["qemu"] = [name for name, _ in qemu_lane]
-        seen["host"] = [name for name, _ in host_lane]
+    def run(steps: plan.Plan) -> int:
+        seen["qemu"] = [step.name for step in steps.qemu]
+        seen["host"] = [step.name for step in steps.host]
         return 0
 
-    monkeypatch.setattr(cli, "_run_lanes", run_lanes)
-    monkeypatch.setattr(cli, "check_provisioned", lambda: None)
+    monkeypatch.setattr(plan.Plan, "run", run)
+    monkeypatch.setattr(test_command, "check_provisioned", lambda: None)
     assert cli.main(["test", *argv]) == 0
     return seen["qemu"], seen["host"]
 

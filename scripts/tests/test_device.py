@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""Device testing's QEMU stand-in (kittools.device): what "flashing" records,
+"""Device testing's QEMU stand-in (kittools.suite.device): what "flashing" records,
 what the console does before anything is flashed, and the hardware maps."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from kittools import device
+from kittools.suite import device
 from kittools.workspace import KitError
 
 

@@ -4,8 +4,9 @@ consoles, matched to each model's dispatch path, and held by the budget."""
 
 import copy
 
-from kittools import budget, compare, console, floor, model
-from kittools.footprint import Footprint
+from kittools import console, metrics, model
+from kittools.sizes.memory import Footprint
+from kittools.suite import budget, floor
 
 from sample_console import console_log
 
@@ -40,24 +41,24 @@ def test_a_models_floor_path_follows_its_task_context():
     assert floor.path_of(console.Run([])) is None
 
 
-def _with_floor(p50: int) -> compare.VariantData:
+def _with_floor(p50: int) -> metrics.VariantData:
     run = console.parse(console_log("rtos"))
     run.records.append(console.Record("FLOOR", {"path": "msgq", "samples": "1000", "missed": "0", "p50": str(p50),
                                                 "p99": str(p50 + 4), "max": str(p50 + 10),
                                                 "cycles_hz": "12000000"}))
-    return compare.VariantData("rtos", Footprint(100000, 40000, 262144, 65536), run)
+    return metrics.VariantData("rtos", Footprint(100000, 40000, 262144, 65536), run)
 
 
 def test_the_floor_and_the_latency_over_it_are_metrics():
-    values = compare.metrics(_with_floor(160))
+    values = metrics.metrics(_with_floor(160))
     assert values[model.floor_latency("p50")] == 160 * 1e6 / 12000000
     assert values[model.FLOOR_RATIO] == 3.75  # rg1kHz latency p50 600 cycles over 160
-    assert model.FLOOR_RATIO not in compare.metrics(compare.VariantData(
+    assert model.FLOOR_RATIO not in metrics.metrics(metrics.VariantData(
         "rtos", Footprint(1, 1, 2, 2), console.parse(console_log("rtos"))))
 
 
 def test_a_dispatch_path_slower_against_its_floor_fails_the_budget():
-    baseline = compare.results([_with_floor(160)])
+    baseline = metrics.results([_with_floor(160)])
     slower = copy.deepcopy(baseline)
     slower.variants["rtos"].metrics[model.FLOOR_RATIO] *= 1.2
     verdict = budget.check(slower, baseline)

@@ -13,8 +13,9 @@ from pathlib import Path
 import pytest
 from fprime_gds.common.communication.framing import FpFramerDeframer
 
-from kittools import fuzz, ground, link_client, runner
-from kittools.gds_adapter import UnixSocketAdapter
+from kittools.build import runner
+from kittools.link import client, fuzz, ground
+from kittools.link.gds_adapter import UnixSocketAdapter
 from kittools.workspace import KitError
 
 DEPLOYMENT = fuzz.Deployment(noop=0x500, setpoint=0x1100, opcodes=frozenset({0x500, 0x1100}), accumulator_size=320)
@@ -22,8 +23,8 @@ DEPLOYMENT = fuzz.Deployment(noop=0x500, setpoint=0x1100, opcodes=frozenset({0x5
 
 def test_fuzzer_frames_are_what_fprime_gds_deframes():
     FpFramerDeframer.set_constants()
-    payload = link_client.command(0x500)
-    packets, rest, _ = FpFramerDeframer().deframe_all(link_client.frame(payload), no_copy=False)
+    payload = client.command(0x500)
+    packets, rest, _ = FpFramerDeframer().deframe_all(client.frame(payload), no_copy=False)
     assert packets == [payload] and rest == b""
 
 
@@ -44,20 +45,20 @@ def test_invalid_frames_are_invalid_and_seeded():
             packets, _, _ = FpFramerDeframer().deframe_all(data + fuzz.PADDING, no_copy=False)
             assert packets == [], f"{kind} frame {data.hex()} deframed"
             if kind == "garbage":
-                assert not set(data) & link_client.START_WORD_BYTES
+                assert not set(data) & client.START_WORD_BYTES
             if kind in ("oversized", "length_wraps"):
-                (length,) = link_client.HEADER.unpack_from(data)[1:]
+                (length,) = client.HEADER.unpack_from(data)[1:]
                 assert length + 12 > DEPLOYMENT.accumulator_size
 
 
 def test_a_truncated_frame_lacks_body_bytes_so_no_next_frame_completes_it():
     FpFramerDeframer.set_constants()
     rng = random.Random(3)
-    noop = link_client.frame(link_client.command(DEPLOYMENT.noop))
+    noop = client.frame(client.command(DEPLOYMENT.noop))
     for _ in range(500):
         data = fuzz.invalid_frame("truncated", rng, DEPLOYMENT)
-        (_, length) = link_client.HEADER.unpack_from(data)
-        assert len(data) < link_client.HEADER.size + length, data.hex()
+        (_, length) = client.HEADER.unpack_from(data)
+        assert len(data) < client.HEADER.size + length, data.hex()
         packets, _, _ = FpFramerDeframer().deframe_all(data + noop + fuzz.PADDING, no_copy=False)
         assert len(packets) <= 1, data.hex()
 

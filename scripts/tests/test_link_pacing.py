@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import pytest
 
-from kittools import flood, link_client, serial_sweep
-from kittools.link_client import START_WORD_BYTES, bytes_per_second, line_rate
-from kittools.serial_sweep import LinkCounts, Offer, PointTraffic, traffic_time
+from kittools.link import client, flood, serial_sweep
+from kittools.link.client import START_WORD_BYTES, bytes_per_second, line_rate
+from kittools.link.serial_sweep import LinkCounts, Offer, PointTraffic, traffic_time
 from kittools.workspace import KitError
 
 NOOP = bytes(18)
@@ -24,7 +24,7 @@ def test_the_line_rate_comes_from_the_link_line():
 def test_noise_frames_nothing():
     import random
 
-    data = link_client.noise(random.Random(1), 10_000)
+    data = client.noise(random.Random(1), 10_000)
     assert len(data) == 10_000 and not set(data) & START_WORD_BYTES
 
 

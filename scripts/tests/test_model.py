@@ -10,8 +10,10 @@ from pathlib import Path
 import pytest
 import yaml
 
-from kittools import analysis, compare, console, model, results
-from kittools.footprint import Footprint
+from kittools import console, metrics, model
+from kittools.report import analysis
+from kittools.sizes.memory import Footprint
+from kittools.suite import results
 
 from sample_console import console_log
 
@@ -40,20 +42,20 @@ def test_bad_metric_keys_are_refused(key):
         model.MetricId.parse(key)
 
 
-def _data(variant: str, **kwargs) -> compare.VariantData:
-    return compare.VariantData(variant, Footprint(1000, 500, 262144, 65536),
+def _data(variant: str, **kwargs) -> metrics.VariantData:
+    return metrics.VariantData(variant, Footprint(1000, 500, 262144, 65536),
                                console.parse(console_log(variant, **kwargs)))
 
 
 def test_a_results_file_round_trips(tmp_path):
-    data = compare.results([_data("baremetal"), _data("rtos")])
+    data = metrics.results([_data("baremetal"), _data("rtos")])
     path = tmp_path / "r.json"
     path.write_text(json.dumps(data.to_json()))
     assert results.load(path) == data
 
 
 def test_schema_1_files_load_with_the_same_values(tmp_path):
-    data = compare.results([_data("baremetal"), _data("rtos", slips=2)])
+    data = metrics.results([_data("baremetal"), _data("rtos", slips=2)])
     v1 = data.to_json()
     v1["schema_version"] = 1
     for variant in v1["variants"].values():
@@ -77,24 +79,26 @@ def test_the_committed_baselines_load(board):
 
 
 def test_the_budget_gate_imports_no_plotting_or_templating_library():
-    code = ("import sys, kittools.budget, kittools.results, kittools.testing\n"
+    code = ("import sys, kittools.suite.budget, kittools.suite.results, kittools.suite.verdict,"
+            " kittools.commands.test\n"
             "bad = sorted(m for m in sys.modules if m.split('.')[0] in ('matplotlib', 'jinja2', 'kittools')"
-            " and m in ('matplotlib', 'jinja2', 'kittools.report', 'kittools.plots', 'kittools.render'))\n"
+            " and m in ('matplotlib', 'jinja2', 'kittools.report.writer', 'kittools.report.plots',"
+            " 'kittools.report.render'))\n"
             "print(','.join(bad))")
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert run.stdout.strip() == ""
 
 
 def test_the_cpu_context_kind_comes_from_the_task_records():
-    data = compare.results([_data("baremetal"), _data("rtos")])
+    data = metrics.results([_data("baremetal"), _data("rtos")])
     assert data.variants["baremetal"].context_kind() == "slice"
     assert data.variants["rtos"].context_kind() == "thread"
     # The record, not the variant's name, decides: threads on a variant named otherwise count switches
-    renamed = compare.results([_data("baremetal", context="thread"), _data("rtos", context="slice")])
+    renamed = metrics.results([_data("baremetal", context="thread"), _data("rtos", context="slice")])
     assert analysis.switches_per_second(renamed, "baremetal") == 2001 / 2  # runs over a 2 s run
     assert analysis.switches_per_second(renamed, "rtos") is None
     # Records that do not say: no guess
-    old = compare.results([_data("baremetal"), _data("rtos")])
+    old = metrics.results([_data("baremetal"), _data("rtos")])
     for r in old.variants["rtos"].records:
         r.pop("context", None)
     assert old.variants["rtos"].context_kind() is None

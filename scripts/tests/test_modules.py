@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-from kittools import modules
+from kittools.sizes import by_layer
 
 
 def _tree():
@@ -25,7 +25,7 @@ def _tree():
 
 
 def test_every_layer_is_recognised():
-    sizes = modules.breakdown(_tree())
+    sizes = by_layer.breakdown(_tree())
     assert sizes["Zephyr kernel, arch, drivers"] == 10
     assert sizes["F´ services"] == 20
     assert sizes["F´ framework"] == 5
@@ -37,24 +37,24 @@ def test_every_layer_is_recognised():
 
 
 def test_breakdown_accounts_for_every_byte():
-    assert sum(modules.breakdown(_tree()).values()) == 100
+    assert sum(by_layer.breakdown(_tree()).values()) == 100
 
 
 def test_the_ground_link_is_its_own_layer():
-    link = modules.GROUND_LINK
+    link = by_layer.GROUND_LINK
     # its components' code, by folder, generated or not
-    assert modules.classify("F-Prime/Svc/ComQueue/ComQueueComponentAc.cpp/f", "OUTPUT_DIR") == link
-    assert modules.classify("deps/fprime/Svc/FrameAccumulator/FrameAccumulator.cpp/f", "WORKSPACE") == link
-    assert modules.classify("deps/fprime-zephyr/fprime-zephyr/Drv/ZephyrUartDriver/ZephyrUartDriver.cpp/f",
+    assert by_layer.classify("F-Prime/Svc/ComQueue/ComQueueComponentAc.cpp/f", "OUTPUT_DIR") == link
+    assert by_layer.classify("deps/fprime/Svc/FrameAccumulator/FrameAccumulator.cpp/f", "WORKSPACE") == link
+    assert by_layer.classify("deps/fprime-zephyr/fprime-zephyr/Drv/ZephyrUartDriver/ZephyrUartDriver.cpp/f",
                             "WORKSPACE") == link
     # path-less: its vtables and its instances' objects (static RAM)
-    assert modules.classify(":/_ZTVN3Svc8ComQueueE") == link
-    assert modules.classify(":/_ZN3Kit8linkUartE") == link
-    assert modules.classify(":/_ZN3Kit10linkHealthE") == link
+    assert by_layer.classify(":/_ZTVN3Svc8ComQueueE") == link
+    assert by_layer.classify(":/_ZN3Kit8linkUartE") == link
+    assert by_layer.classify(":/_ZN3Kit10linkHealthE") == link
     # not the link: another instance, another service
-    assert modules.classify(":/_ZN3Kit6timingE") == modules.KIT
+    assert by_layer.classify(":/_ZN3Kit6timingE") == by_layer.KIT
     dispatcher = "deps/fprime/Svc/CmdDispatcher/CommandDispatcherImpl.cpp/f"
-    assert modules.classify(dispatcher, "WORKSPACE") == modules.SERVICES
+    assert by_layer.classify(dispatcher, "WORKSPACE") == by_layer.SERVICES
 
 
 def test_a_size_report_is_made_again_only_for_another_image(tmp_path, monkeypatch):
@@ -76,17 +76,17 @@ def test_a_size_report_is_made_again_only_for_another_image(tmp_path, monkeypatc
             (tmp_path / f"{kind}-symbols.json").write_text(json.dumps(_tree()))
         return subprocess.CompletedProcess(command, 0, "", "")
 
-    monkeypatch.setattr(modules.subprocess, "run", size_report)
-    assert modules.report(tmp_path, "rom")["total_size"] == 100
-    modules.report(tmp_path, "ram")
-    assert made == [("kittools.size_report", "0")]
+    monkeypatch.setattr(by_layer.subprocess, "run", size_report)
+    assert by_layer.report(tmp_path, "rom")["total_size"] == 100
+    by_layer.report(tmp_path, "ram")
+    assert made == [("kittools.sizes.size_report", "0")]
     later = elf.stat().st_mtime + 60
     os.utime(elf, (later, later))  # relinked, same bytes
-    modules.report(tmp_path, "rom")
-    assert made == [("kittools.size_report", "0")]
+    by_layer.report(tmp_path, "rom")
+    assert made == [("kittools.sizes.size_report", "0")]
     elf.write_bytes(b"image 2")
-    modules.report(tmp_path, "ram")
-    assert made == [("kittools.size_report", "0")] * 2
+    by_layer.report(tmp_path, "ram")
+    assert made == [("kittools.sizes.size_report", "0")] * 2
 
 
 def test_the_size_report_places_a_path_in_zephyrs_groups():
@@ -95,7 +95,7 @@ def test_the_size_report_places_a_path_in_zephyrs_groups():
     its absolute path, a symbol without a source file under "(no paths)"."""
     from pathlib import Path
 
-    from kittools import size_report
+    from kittools.sizes import size_report
 
     build = size_report.KIT_ROOT / "twister-out" / "b"
     groups = size_report._groups(build)
@@ -105,4 +105,4 @@ def test_the_size_report_places_a_path_in_zephyrs_groups():
     assert size_report._place(size_report.KIT_ROOT / "app" / "a.cpp" / "f", groups) == ("WORKSPACE", "app/a.cpp/f")
     assert size_report._place(Path("/usr/lib/gcc/x.c/f"), groups) == ("/", "/usr/lib/gcc/x.c/f")
     assert size_report._place(Path(":", "_ZTVN3Kit1AE"), groups) == ("(no paths)", ":/_ZTVN3Kit1AE")
-    assert modules.classify(":/_ZTVN3Kit1AE", "(no paths)") == modules.KIT
+    assert by_layer.classify(":/_ZTVN3Kit1AE", "(no paths)") == by_layer.KIT

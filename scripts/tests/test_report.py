@@ -4,8 +4,10 @@ import json
 
 import pytest
 
-from kittools import analysis, budget, compare, console, model, report, results
-from kittools.footprint import Footprint
+from kittools import console, metrics, model
+from kittools.report import analysis, writer
+from kittools.sizes.memory import Footprint
+from kittools.suite import budget, results
 from kittools.workspace import KitError
 
 from sample_console import console_log
@@ -13,11 +15,11 @@ from sample_console import console_log
 
 def _results(**rtos_kwargs) -> model.Results:
     def data(variant, rom, ram, **kwargs):
-        return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536),
+        return metrics.VariantData(variant, Footprint(rom, ram, 262144, 65536),
                                    console.parse(console_log(variant, **kwargs)),
                                    {"F´ framework": 20000, "libc (picolibc, libgcc)": 9000},
                                    {"F´ framework": 70, "libc (picolibc, libgcc)": 200})
-    return compare.results([data("baremetal", 96000, 30000), data("rtos", 102000, 42000, **rtos_kwargs)])
+    return metrics.results([data("baremetal", 96000, 30000), data("rtos", 102000, 42000, **rtos_kwargs)])
 
 
 def _write(tmp_path, name, data) -> object:
@@ -58,7 +60,7 @@ def test_findings_are_generated_from_the_numbers():
 
 
 def test_outputs_are_written_and_the_html_is_self_contained(tmp_path):
-    outcome = report.write(_results(), tmp_path)
+    outcome = writer.write(_results(), tmp_path)
     names = {p.name for p in outcome.files}
     assert {"report.md", "report.html", "report.json", "report.csv"} <= names
     html = (tmp_path / "report.html").read_text()
@@ -69,7 +71,7 @@ def test_outputs_are_written_and_the_html_is_self_contained(tmp_path):
 
 def test_budget_passes_on_the_baseline_itself(tmp_path):
     data = _results()
-    outcome = report.write(data, tmp_path, baseline=copy.deepcopy(data))
+    outcome = writer.write(data, tmp_path, baseline=copy.deepcopy(data))
     assert budget.check(data, copy.deepcopy(data)).passed
     assert outcome.violations == []
     assert "Budget check: PASS" in (tmp_path / "report.md").read_text()
@@ -81,7 +83,7 @@ def test_budget_fails_on_a_worsened_run(tmp_path):
     worse.variants["rtos"].metrics[model.ROM] *= 1.05                              # +5% ROM
     worse.variants["rtos"].metrics[model.rg_metric("rg1kHz", "latency", "p99")] += 20  # p99 regression
     worse.variants["baremetal"].metrics[model.slips("rg1kHz")] = 3
-    outcome = report.write(worse, tmp_path, baseline=baseline)
+    outcome = writer.write(worse, tmp_path, baseline=baseline)
     assert outcome.violations == budget.check(worse, baseline).violations
     assert len(outcome.violations) == 3
     assert any("ROM (bytes)" in v and "over budget" in v for v in outcome.violations)
@@ -93,7 +95,7 @@ def test_small_p99_changes_are_not_regressions(tmp_path):
     baseline = _results()
     noisy = copy.deepcopy(baseline)
     noisy.variants["rtos"].metrics[model.rg_metric("rg1kHz", "jitter", "p99")] += 1.5  # +150% but under 2 us
-    assert report.write(noisy, tmp_path, baseline=baseline).violations == []
+    assert writer.write(noisy, tmp_path, baseline=baseline).violations == []
 
 
 def test_a_board_only_built_is_reported_without_runs_verdicts_or_times(tmp_path):
@@ -104,13 +106,13 @@ def test_a_board_only_built_is_reported_without_runs_verdicts_or_times(tmp_path)
                              footprint={"rom": rom, "ram": ram, "rom_size": 524288, "ram_size": 98304})
     data = model.Results({"board": "nucleo_f401re/stm32f401xe", "run": results.NOT_RUN},
                          {"baremetal": built(157054, 46428), "rtos": built(162204, 64092)})
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert f"Board nucleo_f401re/stm32f401xe: {results.NOT_RUN}." in markdown
     assert "Run verdicts" not in markdown and "virtual time" not in markdown
     assert "| F´ framework | 148,054 | 153,204 | 46,228 | 63,892 |" in markdown
     # Beside the emulated boards: its ROM and RAM, no timing
-    report.write_boards([_results(), data], tmp_path / "boards")
+    writer.write_boards([_results(), data], tmp_path / "boards")
     assert "nucleo_f401re/stm32f401xe rtos" in (tmp_path / "boards" / "report.md").read_text()
 
 

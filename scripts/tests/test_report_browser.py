@@ -8,7 +8,7 @@ import subprocess
 
 from PIL import Image
 
-from kittools import report
+from kittools.report import writer
 
 from test_report import _results
 
@@ -25,7 +25,7 @@ def _chromium(tmp_path, *args: str) -> subprocess.CompletedProcess:
 
 
 def test_report_renders_tables_and_plots_without_console_errors(tmp_path):
-    report.write(_results(), tmp_path)
+    writer.write(_results(), tmp_path)
     page = (tmp_path / "report.html").as_uri()
 
     dom = _chromium(tmp_path, "--dump-dom", page)

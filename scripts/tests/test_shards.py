@@ -9,8 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from kittools import console, results, shards
-from kittools.footprint import Footprint
+from kittools import console
+from kittools.sizes.memory import Footprint
+from kittools.suite import results, shards
 from kittools.workspace import KitError
 
 from sample_console import console_log

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
-from kittools import ports, report, sizing
+from kittools.report import writer
+from kittools.sizes import ports, sizing
 
 from test_report import _results
 
@@ -41,7 +42,7 @@ def test_the_report_shows_sizing_and_ports(tmp_path):
     cost = ports.PortCost([ports.InstancePorts("cmdDisp", "CommandDispatcherImpl", 1544, 14, 16, 280, 192)])
     for variant in data.variants.values():
         variant.sizing = sizing.Sizing([_advice(36, 36)], cost).to_json()
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     text = (tmp_path / "report.md").read_text()
     assert "Sizing advice" in text and "TLMCHAN_HASH_BUCKETS" in text
     assert "Ports:" in text and "30.6%" in text  # (280 + 192) / 1544

@@ -99,9 +99,10 @@ def test_the_floor_and_the_suite_run_on_the_same_boards():
 
 
 def test_kit_compare_leaves_out_exactly_the_profile_builds():
-    from kittools import cli, results
+    from kittools.commands import compare
+    from kittools.suite import results
 
     suite = yaml.safe_load((KIT_ROOT / "tests" / "deployment" / "testcase.yaml").read_text())
     for name, test in suite["tests"].items():
-        tagged = cli.PROFILE_TAG in str(test.get("tags", "")).split()
+        tagged = compare.PROFILE_TAG in str(test.get("tags", "")).split()
         assert tagged == name.startswith(results.PROFILE_PREFIX), name

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-"""The C++ style check (kittools.style) on a throwaway tree."""
+"""The C++ style check (kittools.suite.style) on a throwaway tree."""
 
 import shutil
 import sys
@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from kittools import style
+from kittools.suite import style
 from kittools.workspace import KIT_ROOT, KitError
 
 CLEAN = """\

@@ -2,8 +2,9 @@
 """The load sweep in the report: parsed from SWEEP/BREAK records, breaking
 points computed and cross-checked, plots and guidance generated."""
 
-from kittools import analysis, compare, console, model, report, sweep
-from kittools.footprint import Footprint
+from kittools import console, metrics, model, sweep
+from kittools.report import analysis, writer
+from kittools.sizes.memory import Footprint
 
 from sample_console import console_log
 
@@ -31,12 +32,12 @@ def sweep_lines(variant: str, breaks_at: int | None, say_break: int | None | str
 
 
 def results(baremetal_says: int | None | str = "same", with_sweep: bool = True) -> model.Results:
-    def data(variant: str, rom: int, ram: int, breaks_at: int | None, says: int | None | str) -> compare.VariantData:
+    def data(variant: str, rom: int, ram: int, breaks_at: int | None, says: int | None | str) -> metrics.VariantData:
         text = console_log(variant)
         if with_sweep:
             text += "\n" + "\n".join(sweep_lines(variant, breaks_at, says))
-        return compare.VariantData(variant, Footprint(rom, ram, 262144, 65536), console.parse(text))
-    return compare.results([data("baremetal", 96000, 30000, 1000, baremetal_says),
+        return metrics.VariantData(variant, Footprint(rom, ram, 262144, 65536), console.parse(text))
+    return metrics.results([data("baremetal", 96000, 30000, 1000, baremetal_says),
                             data("rtos", 102000, 42000, None, "same")])
 
 
@@ -78,7 +79,7 @@ def test_choosing_puts_every_model_on_each_axis(tmp_path):
     assert "For the least stack reserved: baremetal, rtos (2.0 KiB)." in lines  # a tie names both
     assert ("slice load: only rtos held rg1kHz to the end of the sweep (2000 µs); the others break at: "
             "baremetal 1000 µs.") in lines
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     assert "## Choosing a model: every model on each axis" in (tmp_path / "report.md").read_text()
 
 
@@ -125,7 +126,7 @@ def test_choosing_says_which_model_misses_with_nothing_added():
 
 
 def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
-    report.write(results(), tmp_path)
+    writer.write(results(), tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "| slice | rg1kHz | 1000 µs | none up to 2000 µs |" in markdown
     assert "## Latency versus load, axis 'slice'" in markdown
@@ -135,7 +136,7 @@ def test_the_report_has_the_breaking_points_the_plot_and_the_table(tmp_path):
 
 
 def test_no_sweep_section_without_sweep_records(tmp_path):
-    report.write(results(with_sweep=False), tmp_path)
+    writer.write(results(with_sweep=False), tmp_path)
     assert "Load sweep" not in (tmp_path / "report.md").read_text()
 
 
@@ -143,7 +144,7 @@ def test_several_boards_are_reported_side_by_side(tmp_path):
     first = results()
     second = results()
     second.conditions["board"] = "mps2/an385"
-    outcome = report.write_boards([first, second], tmp_path)
+    outcome = writer.write_boards([first, second], tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "| metric | qemu_cortex_m3 baremetal | qemu_cortex_m3 rtos | mps2/an385 baremetal | mps2/an385 rtos |" \
         in markdown
@@ -155,7 +156,7 @@ def test_several_boards_are_reported_side_by_side(tmp_path):
 
 
 def test_a_serial_axis_is_reported_in_its_own_unit(tmp_path):
-    """The ground link's axes (kittools.serial_sweep) share the records and
+    """The ground link's axes (kittools.link.serial_sweep) share the records and
     the report with the load axes, each in its unit."""
     data = results()
     uplink = [f"KIT SWEEP axis=uplink point={point} level={rate} unit=cmd/s burst=0 rg={rg} hz={hz} cycles=1000 "
@@ -170,7 +171,7 @@ def test_a_serial_axis_is_reported_in_its_own_unit(tmp_path):
     parsed = sweep.of_records(data.variants["rtos"].records)
     assert parsed is not None and parsed.axes() == ["slice", "uplink"]
     assert parsed.unit("uplink") == "cmd/s" and parsed.breaking_point("uplink", "rg1kHz") == 200
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "| uplink | rg1kHz | 200 cmd/s | 200 cmd/s |" in markdown
     assert "| uplink | rg100Hz | none up to 200 cmd/s | none up to 200 cmd/s |" in markdown
@@ -207,7 +208,7 @@ def test_a_serial_level_played_three_times_is_its_median_with_the_spread(tmp_pat
     assert parsed.spread[("noise", 75, "rg1kHz")] == (1200, 3600)
     assert parsed.series("noise", "rg1kHz")[0].latency_max == 2400  # the median play
     assert parsed.breaking_point("noise", "rg1kHz") is None  # one play of three missed
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "115,200 baud (11,520 B/s)" in markdown
     assert "| noise | 75 | 48/46/48 of 48 | 0/600/0 |" in markdown
@@ -225,7 +226,7 @@ def test_an_axis_one_variant_did_not_run_says_so(tmp_path):
     record = console.parse_line(line)
     assert record is not None
     data.variants["rtos"].records.append({"kind": record.kind, **record.fields})
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     assert "| downlink | rg1kHz | not run | none up to 0 pkt/s |" in (tmp_path / "report.md").read_text()
 
 
@@ -252,8 +253,8 @@ def test_a_policy_is_compared_with_its_model_and_its_shed_load_shown(tmp_path):
 
     data = results()
     text = console_log("baremetal_budgeted") + "\n" + "\n".join(budgeted_lines())
-    data.variants["baremetal_budgeted"] = compare.results(
-        [compare.VariantData("baremetal_budgeted", Footprint(96400, 30100, 262144, 65536), console.parse(text))]
+    data.variants["baremetal_budgeted"] = metrics.results(
+        [metrics.VariantData("baremetal_budgeted", Footprint(96400, 30100, 262144, 65536), console.parse(text))]
     ).variants["baremetal_budgeted"]
     found = analysis.sweeps(data)
     assert found["baremetal_budgeted"].shed("slice", "rg1kHz") == 12
@@ -268,7 +269,7 @@ def test_a_policy_is_compared_with_its_model_and_its_shed_load_shown(tmp_path):
     findings = analysis.findings(data).lines
     assert any(line.startswith("baremetal_budgeted uses") for line in findings)
     assert any("rtos" in line and "baremetal_budgeted" in line and line.startswith("rg1kHz:") for line in findings)
-    report.write(data, tmp_path)
+    writer.write(data, tmp_path)
     markdown = (tmp_path / "report.md").read_text()
     assert "baremetal_budgeted load dropped" in markdown
     assert "| baremetal_budgeted | load | no | 12,000 | 40 | 3 | 2 |" in markdown

@@ -2,7 +2,10 @@
 import copy
 import json
 
-from kittools import budget, cli, model, modules, report, symbols
+from kittools import cli, model
+from kittools.report import writer
+from kittools.sizes import by_layer, symbols
+from kittools.suite import budget
 
 from test_report import _results
 
@@ -24,7 +27,7 @@ def test_leaves_key_by_name_and_tell_same_named_statics_apart():
         ("ZEPHYR_BASE", "kernel/sched.c/z_swap", 0)))
     assert [(leaf.key, leaf.size) for leaf in found] == [
         ("_ZN3Kit6Report5printEv", 300), ("helper@A.cpp", 20), ("helper@B.cpp", 24)]
-    assert found[0].layer == modules.KIT
+    assert found[0].layer == by_layer.KIT
 
 
 def test_a_constructor_alias_swap_is_no_change():
@@ -56,8 +59,8 @@ def test_a_floor_sums_small_symbols_per_layer():
                                    ("WORKSPACE", "app/src/S.cpp/small2", 30),
                                    ("ZEPHYR_BASE", "kernel/sched.c/z_tiny", 8)))
     table = symbols.table(found, floor=128)
-    assert table == {"big": 400, f"(symbols under 128 B: {modules.KIT})": 40,
-                     f"(symbols under 128 B: {modules.ZEPHYR})": 8}
+    assert table == {"big": 400, f"(symbols under 128 B: {by_layer.KIT})": 40,
+                     f"(symbols under 128 B: {by_layer.ZEPHYR})": 8}
     assert sum(table.values()) == sum(leaf.size for leaf in found)
 
 
@@ -76,7 +79,7 @@ def test_a_failed_size_budget_says_which_symbols_grew(tmp_path):
     assert verdict.over_size == {"rtos"}
     assert [(name, d.summary()) for name, d in verdict.sizes] == [
         ("rtos", "ROM: add/remove: 0/0 grow/shrink: 1/0 up/down: 5000/0 (+5000); total 1300 -> 6300")]
-    report.write(worse, tmp_path, baseline=baseline)
+    writer.write(worse, tmp_path, baseline=baseline)
     text = (tmp_path / "report.md").read_text()
     assert "rtos: ROM symbols against the baseline" in text and "Svc::ComQueue::run" in text
 

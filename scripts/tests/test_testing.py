@@ -4,8 +4,8 @@ import os
 
 import pytest
 
-from kittools import results, testing
 from kittools.model import Results
+from kittools.suite import counts, determinism, host, platforms, results, twister, verdict
 from kittools.workspace import KitError
 
 
@@ -15,7 +15,7 @@ def test_twister_tally_counts_failures_errors_and_blocks(tmp_path):
         {"status": "passed"}, {"status": "passed"}, {"status": "failed"},
         {"status": "error"}, {"status": "filtered"}, {"status": "skipped"}, {"status": "blocked"},
     ]}))
-    tally = testing.twister_tally(report)
+    tally = counts.twister_tally(report)
     assert (tally.passed, tally.failed) == (2, 3)
 
 
@@ -27,7 +27,7 @@ def test_a_real_boards_build_counts_once_passed_if_built_and_failed_if_not(tmp_p
         {"name": "tests/boards/board.rtos", "status": "error", "testcases": [{"status": "error"}]},
         {"name": "tests/deployment/kit.rtos", "status": "not run", "testcases": [{"status": "not run"}]},
     ]}))
-    tally = testing.twister_tally(report)
+    tally = counts.twister_tally(report)
     # a suite build not run (it should have run) counts neither way
     assert (tally.passed, tally.failed) == (1, 1)
 
@@ -35,30 +35,30 @@ def test_a_real_boards_build_counts_once_passed_if_built_and_failed_if_not(tmp_p
 def test_the_real_boards_build_every_variant_and_run_nothing():
     import yaml
 
-    suite = yaml.safe_load(testing.BUILD_ONLY_SUITE.read_text())
+    suite = yaml.safe_load(platforms.BUILD_ONLY_SUITE.read_text())
     assert suite["common"]["build_only"] is True
     assert sorted(name.removeprefix(results.BUILD_ONLY_PREFIX) for name in suite["tests"]) == sorted(
-        name.removeprefix("kit.") for name in yaml.safe_load(testing.SUITE.read_text())["tests"]
+        name.removeprefix("kit.") for name in yaml.safe_load(platforms.SUITE.read_text())["tests"]
         if name.startswith("kit."))
-    assert not set(testing.suite_boards(testing.BUILD_ONLY_SUITE)) & set(testing.suite_boards())
+    assert not set(platforms.suite_boards(platforms.BUILD_ONLY_SUITE)) & set(platforms.suite_boards())
 
 
 def test_missing_twister_report_is_an_error(tmp_path):
     with pytest.raises(KitError, match="no report"):
-        testing.twister_tally(tmp_path / "twister.json")
+        counts.twister_tally(tmp_path / "twister.json")
 
 
 def test_gtest_tally(tmp_path):
     report = tmp_path / "ut.json"
     report.write_text(json.dumps({"tests": 12, "failures": 2, "errors": 0}))
-    tally = testing.gtest_tally(report)
+    tally = counts.gtest_tally(report)
     assert (tally.passed, tally.failed) == (10, 2)
 
 
 def test_junit_tally_handles_testsuites_root(tmp_path):
     report = tmp_path / "pytest.xml"
     report.write_text('<testsuites><testsuite tests="5" failures="1" errors="1" skipped="1"/></testsuites>')
-    tally = testing.junit_tally(report)
+    tally = counts.junit_tally(report)
     assert (tally.passed, tally.failed) == (2, 2)
 
 
@@ -85,7 +85,7 @@ def test_recorded_hashes_read_each_played_scenario_log(tmp_path):
         {"name": "tests/deployment/kit.baremetal", "platform": "qemu_cortex_m3/ti_lm3s6965", "status": "failed"},
         {"name": "tests/deployment/kit.rtos", "platform": "qemu_cortex_m3/ti_lm3s6965", "status": "filtered"},
     ]}))
-    assert testing.recorded_hashes(tmp_path) == {("mps2/an385", rtos, "nominal"): "0xdeadbeef",
+    assert determinism.recorded_hashes(tmp_path) == {("mps2/an385", rtos, "nominal"): "0xdeadbeef",
                                                  ("qemu_cortex_m3/ti_lm3s6965", bare, "faults"): "0x00c0ffee"}
 
 
@@ -95,18 +95,18 @@ def test_twister_tally_counts_a_pytest_configuration_per_scenario(tmp_path):
         {"status": "failed", "testcases": [{"status": "passed"}, {"status": "failed"}, {"status": "passed"}]},
         {"status": "error", "testcases": [{"status": "blocked"}, {"status": "blocked"}]},
     ]}))
-    tally = testing.twister_tally(report)
+    tally = counts.twister_tally(report)
     assert (tally.passed, tally.failed) == (2, 3)
 
 
 def test_the_suite_boards_are_its_platform_allow_list(tmp_path):
     suite = tmp_path / "suite.yaml"
     suite.write_text("common:\n  platform_allow:\n    - qemu_cortex_m3\n    - mps2/an385\ntests: {}\n")
-    assert testing.suite_boards(suite) == ["qemu_cortex_m3", "mps2/an385"]
+    assert platforms.suite_boards(suite) == ["qemu_cortex_m3", "mps2/an385"]
     bad = tmp_path / "testcase.yaml"
     bad.write_text("tests: {}\n")
     with pytest.raises(KitError, match="names no platforms"):
-        testing.suite_boards(bad)
+        platforms.suite_boards(bad)
 
 
 def test_a_baseline_holds_metrics_and_load_breaking_points_not_the_runs_records(tmp_path):
@@ -114,8 +114,9 @@ def test_a_baseline_holds_metrics_and_load_breaking_points_not_the_runs_records(
     (the breaking points the budget holds, read back from the file as CI
     reads it), not the rest of the console, nor the serial axes' (host-paced:
     they do not repeat)."""
-    from kittools import budget, compare, console, results
-    from kittools.footprint import Footprint
+    from kittools import console, metrics
+    from kittools.sizes.memory import Footprint
+    from kittools.suite import budget, results
 
     from sample_console import console_log
 
@@ -132,12 +133,12 @@ def test_a_baseline_holds_metrics_and_load_breaking_points_not_the_runs_records(
         for v in ("baremetal", "rtos"):
             run = console.parse(console_log(v))
             run.records += point("slice", 50, slips_at_50) + point("slice", 75, 3) + point("noise", 50, slips_at_50)
-            runs.append(compare.VariantData(v, Footprint(1000, 500, 262144, 65536), run))
-        return compare.results(runs)
+            runs.append(metrics.VariantData(v, Footprint(1000, 500, 262144, 65536), run))
+        return metrics.results(runs)
 
     data = made(0)
     path = tmp_path / "baselines" / "board.json"
-    testing.write_baseline(data, path)
+    verdict.write_baseline(data, path)
     written = json.loads(path.read_text())
     for variant in written["variants"].values():
         assert {(r["kind"], r["axis"]) for r in variant["records"]} == {("SWEEP", "slice")}
@@ -153,14 +154,14 @@ def test_a_baseline_holds_metrics_and_load_breaking_points_not_the_runs_records(
 
 
 def test_lint_passes_on_the_tooling_and_counts_each_tool(tmp_path):
-    tally = testing.run_lint(tmp_path)
+    tally = host.run_lint(tmp_path)
     assert (tally.passed, tally.failed) == (2, 0), [p.read_text() for p in tmp_path.glob("*.log")]
     assert {p.name for p in tmp_path.glob("*.log")} == {"ruff.log", "mypy.log"}
 
 
 def test_a_lint_failure_is_one_failure(tmp_path, monkeypatch):
-    monkeypatch.setattr(testing, "LINTERS", (("ruff", ["check", "--select", "E", "--line-length", "20", "."]),))
-    assert (testing.run_lint(tmp_path).failed, testing.run_lint(tmp_path).passed) == (1, 0)
+    monkeypatch.setattr(host, "LINTERS", (("ruff", ["check", "--select", "E", "--line-length", "20", "."]),))
+    assert (host.run_lint(tmp_path).failed, host.run_lint(tmp_path).passed) == (1, 0)
 
 
 # Twister 4.0's output with -v (twisterlib/runner.py), colors included
@@ -180,7 +181,7 @@ TWISTER_OUTPUT = [
 
 
 def test_twister_progress_says_one_line_per_finished_configuration():
-    progress = testing.TwisterProgress()
+    progress = twister.TwisterProgress()
     said = [s for s in (progress.line(line) for line in TWISTER_OUTPUT) if s is not None]
     assert said[:3] == [
         "[kit]   twister: 24 configurations to build and run, 2 at a time",
@@ -191,21 +192,21 @@ def test_twister_progress_says_one_line_per_finished_configuration():
 
 
 def test_twister_progress_without_the_announcement_uses_the_line_total():
-    progress = testing.TwisterProgress()
+    progress = twister.TwisterProgress()
     assert progress.line("INFO    - 1/2 qemu_cortex_m3 kit.soak.rtos PASSED (qemu 610.2s)") == \
         "[kit]   1/2 qemu_cortex_m3 kit.soak.rtos PASSED 610.2 s (1 left)"
     assert progress.line("INFO    - Total complete:    1/   2  50%  built (not run):    0, filtered:    0\r") is None
 
 
 def test_streamed_output_is_logged_whole_and_said_line_by_line(tmp_path, monkeypatch, capsys):
-    monkeypatch.setattr(testing, "environment", lambda: dict(os.environ))
+    monkeypatch.setattr(twister, "environment", lambda: dict(os.environ))
     heard: list[str] = []
 
     def say(line: str) -> str | None:
         heard.append(line)
         return f"said {line}" if line.startswith("b") else None
 
-    code = testing._run_streamed(["sh", "-c", "printf 'a\\nb1\\rb2\\n'; exit 3"], tmp_path / "t.log", say)
+    code = twister._run_streamed(["sh", "-c", "printf 'a\\nb1\\rb2\\n'; exit 3"], tmp_path / "t.log", say)
     assert code == 3
     assert (tmp_path / "t.log").read_bytes() == b"a\nb1\rb2\n"
     assert heard == ["a", "b1", "b2"]
@@ -213,7 +214,7 @@ def test_streamed_output_is_logged_whole_and_said_line_by_line(tmp_path, monkeyp
 
 
 def _fake_twister(monkeypatch, commands, status="passed", code=0):
-    """testing._play's twister: records its command, writes its report."""
+    """twister.play's twister: records its command, writes its report."""
     def run(command, log, say):
         commands.append(command)
         out_dir = command[command.index("--outdir") + 1]
@@ -221,21 +222,21 @@ def _fake_twister(monkeypatch, commands, status="passed", code=0):
             json.dump({"testsuites": [{"name": "tests/deployment/kit.rtos", "status": status}]}, report)
         return code
 
-    monkeypatch.setattr(testing, "_run_streamed", run)
+    monkeypatch.setattr(twister, "_run_streamed", run)
 
 
 def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_the_same(tmp_path, monkeypatch):
     suite = tmp_path / "tests" / "deployment" / "testcase.yaml"
     suite.parent.mkdir(parents=True)
     suite.write_text("tests: {kit.rtos: {}}\n")
-    monkeypatch.setattr(testing, "KIT_ROOT", tmp_path)
-    monkeypatch.setattr(testing, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "gnuarmemb"})
+    monkeypatch.setattr(twister, "KIT_ROOT", tmp_path)
+    monkeypatch.setattr(twister, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "gnuarmemb"})
     out_dir = tmp_path / "out"
     out_dir.mkdir()
     commands: list[list[str]] = []
 
     def play():
-        testing._play(["west", "twister"], tmp_path / "t.log", out_dir)
+        twister.play(["west", "twister"], tmp_path / "t.log", out_dir)
         return "--aggressive-no-clean" in commands[-1], "-n" in commands[-1]
 
     _fake_twister(monkeypatch, commands)
@@ -243,7 +244,7 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
     assert play() == (True, False)  # as configured then: ninja's own checks suffice
     suite.write_text("tests: {kit.rtos: {extra_args: SNIPPET=fprime-minimal}}\n")
     assert play() == (False, True)  # twister hands extra_args to CMake only when it configures
-    monkeypatch.setattr(testing, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "zephyr"})
+    monkeypatch.setattr(twister, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "zephyr"})
     assert play() == (False, True)  # another toolchain
     _fake_twister(monkeypatch, commands, status="error")
     assert play() == (True, False)
@@ -252,8 +253,8 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
 
 
 def test_an_earlier_suites_kconfig_file_goes_with_its_cmake_cache(tmp_path, monkeypatch):
-    monkeypatch.setattr(testing, "KIT_ROOT", tmp_path)
-    monkeypatch.setattr(testing, "environment", lambda: {})
+    monkeypatch.setattr(twister, "KIT_ROOT", tmp_path)
+    monkeypatch.setattr(twister, "environment", lambda: {})
     out_dir = tmp_path / "out"
     build = out_dir / "qemu_cortex_m3_ti_lm3s6965" / "deployment" / "kit.rtos"
     (build / "twister").mkdir(parents=True)
@@ -263,7 +264,7 @@ def test_an_earlier_suites_kconfig_file_goes_with_its_cmake_cache(tmp_path, monk
     other.mkdir(parents=True)
     (other / "CMakeCache.txt").write_text("\n")
     _fake_twister(monkeypatch, [])
-    testing._play(["west", "twister"], tmp_path / "t.log", out_dir)
+    twister.play(["west", "twister"], tmp_path / "t.log", out_dir)
     assert not (build / "twister" / "testsuite_extra.conf").exists()
     assert not (build / "CMakeCache.txt").exists()  # configured from scratch
     assert (other / "CMakeCache.txt").exists()

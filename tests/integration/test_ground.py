@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The deployment from the ground: F´'s integration-test API through
 fprime-gds, against a build of the ground scenario (kit test boots each one,
-with fprime-gds on its link: kittools/ground.py).
+with fprime-gds on its link: kittools/link/ground.py).
 
 QEMU runs in virtual time (icount, sleep=off: idle time is skipped), so
 rates are checked on the F´ time tags the deployment puts on its telemetry,

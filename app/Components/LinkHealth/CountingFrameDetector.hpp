@@ -22,7 +22,7 @@ namespace Kit {
 //! to 0xFFFFFFF7 wraps that sum to 0..3, CircularBuffer::peek's own bound
 //! (size + offset) wraps too, and its checksum loop then peeks past the
 //! data and asserts: one 12-byte frame from the ground halted the
-//! deployment (found by the kit's uplink fuzzing, kittools/fuzz.py). Here
+//! deployment (found by the kit's uplink fuzzing, kittools/link/fuzz.py). Here
 //! such a frame is oversized, as any other too long for the accumulator:
 //! FrameAccumulator drops a byte and reports FrameDetectionSizeError.
 class CountingFrameDetector final : public Svc::FrameDetector {

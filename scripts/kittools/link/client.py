@@ -1,0 +1,223 @@
+# SPDX-License-Identifier: Apache-2.0
+"""A raw client of a build's ground link: F´ frames up, the downlink decoded.
+
+The kit's own tools that must control every byte on the link (the uplink
+fuzzer, the serial-load sweep) use it instead of fprime-gds; the downlink is
+decoded with fprime-gds's own framing and decoders and the build's
+dictionary, so both read the deployment as the GDS does.
+"""
+
+from __future__ import annotations
+
+import random
+import re
+import socket
+import struct
+import time
+import zlib
+from collections import Counter, deque
+from collections.abc import Callable
+from pathlib import Path
+
+from kittools.workspace import KitError
+
+START_WORD = 0xDEADBEEF
+HEADER = struct.Struct(">II")  # start word, length (F´'s FprimeProtocol.FrameHeader)
+TRAILER = struct.Struct(">I")  # CRC-32 of header and payload
+DESCRIPTOR = struct.Struct(">H")  # FwPacketDescriptorType
+OPCODE = struct.Struct(">I")  # FwOpcodeType
+FW_PACKET_COMMAND = 0
+FW_PACKET_TELEM = 1
+FW_PACKET_LOG = 2
+
+
+#: A UART character on the line: start bit, 8 data bits, stop bit
+BITS_PER_BYTE = 10
+# The firmware's LINK line names its line rate (app/src/Report.cpp: the link
+# UART's devicetree current-speed)
+LINK_BAUD = re.compile(r"\bbaud=(\d+)")
+# Bytes noise never holds: no start word (DE AD BE EF) can form in it or
+# across its edges with a neighbour, so noise never frames a command
+START_WORD_BYTES = frozenset(b"\xde\xad\xbe\xef")
+NOISE_BYTES = bytes(value for value in range(256) if value not in START_WORD_BYTES)
+# LinkHealth writes its telemetry every 100 ms: the ground's view of the
+# deployment's clock moves in steps of about this much
+CLOCK_STEP_S = 0.1
+
+
+def line_rate(link_line: str) -> int:
+    """The line rate (bits/s) a LINK line names."""
+    found = LINK_BAUD.search(link_line)
+    if found is None:
+        raise KitError(f"the firmware's LINK line names no line rate (baud=): {link_line!r}; is it a kit build "
+                       "of this version?")
+    return int(found.group(1))
+
+
+def bytes_per_second(baud: int) -> float:
+    """What a line carries at most, in bytes per second."""
+    return baud / BITS_PER_BYTE
+
+
+def noise(rng: random.Random, count: int) -> bytes:
+    """`count` random bytes that frame nothing (no start-word byte)."""
+    return bytes(rng.choices(NOISE_BYTES, k=count))
+
+
+def frame(payload: bytes) -> bytes:
+    header = HEADER.pack(START_WORD, len(payload))
+    return header + payload + TRAILER.pack(zlib.crc32(header + payload) & 0xFFFFFFFF)
+
+
+def command(opcode: int, arguments: bytes = b"") -> bytes:
+    return DESCRIPTOR.pack(FW_PACKET_COMMAND) + OPCODE.pack(opcode) + arguments
+
+
+class Downlink:
+    """The link socket: bytes up, and the downlink decoded into events (by
+    name) and the latest value of every telemetry channel."""
+
+    def __init__(self, socket_path: Path, dictionary: Path) -> None:
+        from fprime_gds.common.communication.framing import FpFramerDeframer
+        from fprime_gds.common.decoders.ch_decoder import ChDecoder
+        from fprime_gds.common.decoders.event_decoder import EventDecoder
+        from fprime_gds.common.models.dictionaries import Dictionaries
+
+        dictionaries = Dictionaries()
+        dictionaries.load_dictionaries(str(dictionary), None, None)
+        self._events = EventDecoder(dictionaries.event_id)
+        self._channels = ChDecoder(dictionaries.channel_id)
+        FpFramerDeframer.set_constants()
+        self._deframer = FpFramerDeframer()
+        self._pending = b""
+        self.events: Counter[str] = Counter()
+        self.telemetry: dict[str, int] = {}
+        # The deployment's time (F´ time tags, s) of the newest sample of each
+        # channel and the newest event of each name
+        self.telemetry_time: dict[str, float] = {}
+        self.event_time: dict[str, float] = {}
+        # The arguments of the newest event of each name
+        self.event_args: dict[str, tuple[object, ...]] = {}
+        # The newest time tag of anything decoded: the deployment's clock, as
+        # far as the ground knows it
+        self.now = 0.0
+        # (host clock, deployment clock) at each step of `now`: the pace at
+        # which the deployment's time passes in the host's
+        self._steps: deque[tuple[float, float]] = deque(maxlen=20)
+        self._outbox = bytearray()
+        #: Every byte given to send(), taken by the link or not yet
+        self.bytes_sent = 0
+        self._socket = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        try:
+            self._socket.connect(str(socket_path))
+        except OSError as error:
+            raise KitError(f"cannot connect to the link {socket_path}: {error} (is QEMU running it?)") from None
+
+    def close(self) -> None:
+        self._socket.close()
+
+    def send(self, data: bytes) -> None:
+        """Queue bytes for the link and write what it takes now. Never
+        blocks: QEMU writes the downlink synchronously from its main loop,
+        so a host blocked writing while QEMU is blocked writing to the host
+        would hold both for ever. What the link has not taken yet
+        (`unsent`) goes while the downlink is pumped."""
+        self._outbox += data
+        self.bytes_sent += len(data)
+        self._flush()
+
+    def unsent(self) -> int:
+        """Bytes queued that the link has not taken yet (QEMU's UART reads
+        only as fast as the firmware empties it)."""
+        return len(self._outbox)
+
+    def _flush(self) -> None:
+        # Non-blocking for the writes (pump sets its read time-out again)
+        self._socket.settimeout(0.0)
+        while self._outbox:
+            try:
+                taken = self._socket.send(self._outbox)
+            except BlockingIOError:
+                return
+            except OSError as error:
+                raise KitError(f"the link refused bytes: {error} (QEMU stopped?)") from None
+            del self._outbox[:taken]
+
+    def estimated_now(self) -> float:
+        """The deployment's time now: its newest time tag, moved on by the
+        host's clock at the pace its recent tags came, and never more than
+        one clock step past the newest tag. QEMU's virtual time runs at no
+        fixed pace against the host's (icount skips idle time): only the
+        deployment's own tags say where it is."""
+        if len(self._steps) < 2:
+            return self.now
+        (host_first, first), (host_last, last) = self._steps[0], self._steps[-1]
+        if host_last <= host_first:
+            return self.now
+        pace = (last - first) / (host_last - host_first)
+        return self.now + min(pace * (time.monotonic() - host_last), CLOCK_STEP_S)
+
+    def pump(self, until: Callable[[], bool], timeout_s: float) -> bool:
+        """Read and decode the downlink until `until()` holds or the time-out."""
+        deadline = time.monotonic() + timeout_s
+        while not until():
+            remaining = deadline - time.monotonic()
+            if remaining <= 0:
+                return False
+            self._flush()
+            # Back soon to write while bytes wait to go
+            self._socket.settimeout(min(remaining, 0.005 if self._outbox else 0.5))
+            try:
+                chunk = self._socket.recv(65536)
+            except TimeoutError:
+                continue
+            if not chunk:
+                raise KitError("the link closed: QEMU stopped")
+            self._decode(chunk)
+        return True
+
+    def _decode(self, chunk: bytes) -> None:
+        before = self.now
+        self._decode_packets(chunk)
+        if self.now > before:
+            self._steps.append((time.monotonic(), self.now))
+
+    def _decode_packets(self, chunk: bytes) -> None:
+        packets, self._pending, _ = self._deframer.deframe_all(self._pending + chunk, no_copy=False)
+        for packet in packets:
+            (descriptor,) = DESCRIPTOR.unpack_from(packet)
+            body = packet[DESCRIPTOR.size:]
+            if descriptor == FW_PACKET_LOG:
+                for event in self._events.decode_api(body):
+                    name = event.template.get_full_name()
+                    self.events[name] += 1
+                    self.event_time[name] = event.get_time().get_float()
+                    self.event_args[name] = tuple(arg.val for arg in event.get_args())
+                    self.now = max(self.now, self.event_time[name])
+            elif descriptor == FW_PACKET_TELEM:
+                for sample in self._channels.decode_api(body):
+                    name = sample.template.get_full_name()
+                    self.telemetry[name] = sample.get_val()
+                    self.telemetry_time[name] = sample.get_time().get_float()
+                    self.now = max(self.now, self.telemetry_time[name])
+
+
+class Pacer:
+    """Bytes up the link at a steady rate of the deployment's time, from a
+    start on its clock: how many are due now. The ground's only clock for
+    the deployment is its downlink's time tags (Downlink.estimated_now), so
+    within a clock step bytes go in bursts; over a step they keep the rate.
+    QEMU's UART takes host bytes with no baud timing of its own: this is
+    what gives the emulated link its line rate."""
+
+    def __init__(self, link: Downlink, per_second: float) -> None:
+        self.link = link
+        self.per_second = per_second
+        self.started = link.estimated_now()
+        self.sent = 0
+
+    def due(self) -> int:
+        return max(0, int(self.per_second * (self.link.estimated_now() - self.started)) - self.sent)
+
+    def elapsed(self) -> float:
+        return self.link.estimated_now() - self.started

@@ -1,0 +1,2 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The report: its document model, analyses, tables, plots and renderers."""

@@ -1,0 +1,275 @@
+# SPDX-License-Identifier: Apache-2.0
+"""What each F´ knob costs: `kit footprint`.
+
+For one board and variant (app/variants.yaml), build the deployment with a footprint profile
+(modules/fprime/snippets), then once per knob with only that knob moved to
+another profile's value (or, for the assert level, to each other level), and
+record ROM, static RAM and their change per layer against the profile's own
+build; each build then plays the nominal run under QEMU. A build that fails,
+or whose nominal run does not pass, is a row of the table like the others:
+what a knob costs includes what it breaks.
+
+The knobs are the F´ switches of modules/fprime/Kconfig in which the two
+profiles differ, so the list follows the Kconfig and the profiles, not a
+list here; and the services' other forms the variant's model has
+(SERVICE_KNOBS), but for those its build has already (a policy may select
+one).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Any
+
+from kittools import console, variants
+from kittools.build import runner
+from kittools.report import render
+from kittools.report.document import CAVEAT, Section, Table, Text
+from kittools.sizes import by_layer
+from kittools.sizes.memory import kconfig, measure
+from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
+
+SNIPPETS = KIT_ROOT / "modules" / "fprime" / "snippets"
+#: The assert level is a choice: each alternative is a knob of its own
+ASSERT_LEVELS = ("CONFIG_FPRIME_ASSERT_NONE", "CONFIG_FPRIME_ASSERT_FILE_ID", "CONFIG_FPRIME_ASSERT_FILE_NAME",
+                 "CONFIG_FPRIME_ASSERT_RELATIVE_PATH")
+_PREFIX = "CONFIG_FPRIME_"
+
+
+def profiles() -> list[str]:
+    """The footprint profiles: the snippets of modules/fprime."""
+    return sorted(p.parent.name for p in SNIPPETS.glob("*/snippet.yml"))
+
+
+def check_profile(name: str) -> str:
+    if name not in profiles():
+        raise KitError(f"unknown profile '{name}'; the profiles are: {', '.join(profiles())} "
+                       f"(modules/fprime/snippets)")
+    return name
+
+
+@dataclass(frozen=True)
+class Knob:
+    """One build of the ablation: its name and the settings it adds to the profile."""
+
+    name: str
+    settings: tuple[str, ...] = ()  # CONFIG_X=value
+    models: tuple[str, ...] = ()  # the execution models it applies to, whatever the policy (empty: all)
+
+
+#: Knobs that are not F´ switches: a service's other form, where a model has it
+SERVICE_KNOBS = (
+    # fprime-baremetal builds TlmLinearChan for its own model only; its table
+    # comes out of the C heap, whose arena grows to hold it (app/Kconfig)
+    Knob("telemetry store: TlmChan -> TlmLinearChan",
+         ("CONFIG_KIT_TELEMETRY_LINEAR=y", "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=15360"), ("baremetal",)),
+    # fprime-baremetal's dispatcher: no task, stack or queue; its tables
+    # from F´'s allocator (baremetal_passive's policy selects it already)
+    Knob("command dispatcher: CommandDispatcher -> PassiveCmdDispatcher",
+         ("CONFIG_KIT_CMD_DISPATCHER_PASSIVE=y",), ("baremetal",)),
+)
+
+
+@dataclass
+class Row:
+    knob: str
+    settings: list[str]
+    built: bool
+    passed: bool | None = None  # the nominal run; None: not run (the build failed)
+    rom: int | None = None
+    ram: int | None = None
+    rom_layers: dict[str, int] = field(default_factory=dict)
+    ram_layers: dict[str, int] = field(default_factory=dict)
+    note: str = ""
+    seconds: float = 0.0
+
+
+def fprime_settings(dotconfig: Path) -> dict[str, str]:
+    """The F´ switches of a build (modules/fprime/Kconfig), as its .config has them."""
+    return {k: v for k, v in kconfig(dotconfig).items() if k.startswith(_PREFIX)}
+
+
+def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[str, str] | None = None) -> list[Knob]:
+    """One knob per F´ switch in which two profiles' builds differ (moved to
+    the other's value), one per other assert level, and the execution
+    model's service knobs but those the profile's build (its whole .config,
+    `built`) has already."""
+    found = [Knob("profile")]
+    current_assert = next((k for k in ASSERT_LEVELS if base.get(k) == "y"), None)
+    for level in ASSERT_LEVELS:
+        if level != current_assert:
+            found.append(Knob(f"asserts: {level.removeprefix('CONFIG_FPRIME_ASSERT_').lower()}", (f"{level}=y",)))
+    for key in sorted(set(base) | set(other)):
+        if key in ASSERT_LEVELS or key == "CONFIG_FPRIME":
+            continue
+        before, after = base.get(key, "n"), other.get(key, "n")
+        if before != after:
+            name = key.removeprefix(_PREFIX).lower()
+            found.append(Knob(f"{name}: {before} -> {after}", (f"{key}={after}",)))
+    def has(knob: Knob) -> bool:
+        return built is not None and all(built.get(k) == v for k, v in (s.split("=", 1) for s in knob.settings))
+
+    return found + [k for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
+
+
+_OVERFLOW = re.compile(r"region `(?P<region>\w+)' overflowed by (?P<bytes>\d+) bytes")
+_ERROR = re.compile(r"error: (?P<message>.+)$", re.MULTILINE)
+
+
+def build_failure(log: Path) -> str:
+    """Why a build failed, in a line: the memory regions that overflowed, or
+    the first distinct compiler errors (F´'s static asserts tie knobs together)."""
+    text = log.read_text(errors="replace") if log.is_file() else ""
+    found = [f"{m['region']} overflowed by {int(m['bytes']):,} B" for m in _OVERFLOW.finditer(text)]
+    if not found:
+        found = [m["message"].strip() for m in _ERROR.finditer(text)
+                 if not m["message"].startswith(("ld returned", "command exited"))]
+    return f"{'; '.join(list(dict.fromkeys(found))[:2]) or 'no reason found'} ({log.name})"
+
+
+def _build(board: str, variant: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path,
+           cmake_only: bool = False) -> bool:
+    command = ["west", "build", "-p", "always", "-b", board, "-d", str(build_dir), "-S", profile,
+               *(["--cmake-only"] if cmake_only else []), str(KIT_ROOT / "app"), "--",
+               *variants.get(variant).cmake_args(), *(f"-D{s}" for s in settings)]
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("w") as output:
+        output.write(" ".join(command) + "\n")
+        output.flush()
+        return subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=output,
+                              stderr=subprocess.STDOUT).returncode == 0
+
+
+def _slug(knob: str) -> str:
+    """A knob's build folder and log names."""
+    return re.sub(r"-+", "-", "".join(c if c.isalnum() else "-" for c in knob)).strip("-")
+
+
+def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) -> Row:
+    started = time.monotonic()
+    slug = _slug(knob.name)
+    build_dir = out_dir / slug
+    row = Row(knob.name, list(knob.settings), built=_build(board, variant, profile, knob.settings, build_dir,
+                                                            out_dir / f"{slug}.build.log"))
+    if row.built:
+        footprint = measure(build_dir)
+        row.rom, row.ram = footprint.rom, footprint.ram
+        row.rom_layers = by_layer.breakdown(by_layer.report(build_dir, "rom"))
+        row.ram_layers = by_layer.breakdown(by_layer.report(build_dir, "ram"))
+        try:
+            text = runner.run(build_dir, out_dir / f"{slug}.run.log")
+        except KitError as error:  # no end line in time
+            row.passed = False
+            row.note = str(error).splitlines()[0][:300]
+        else:
+            # A halted run has no END line: its HALT or FATAL line says why
+            records = [r for r in map(console.parse_line, text.splitlines()) if r is not None]
+            row.passed = any(r.kind == "END" and r.fields.get("result") == "PASS" for r in records)
+            if not row.passed:
+                row.note = "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
+                                     for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
+    else:
+        row.note = build_failure(out_dir / f"{slug}.build.log")
+    row.seconds = time.monotonic() - started
+    return row
+
+
+def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
+        say: Callable[[str], None]) -> list[Row]:
+    """The ablation of one board and variant from `profile`, each knob moved toward `toward`."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    say(f"footprint: {board} {variant}: building the profiles {profile} and {toward}")
+    base = _measure(Knob("profile"), board, variant, profile, out_dir)
+    if not base.built:
+        raise KitError(f"the profile {profile} does not build for {board} {variant}: {base.note}")
+    # The other profile's values: its configuration is enough (it need not fit)
+    other_dir = out_dir / "toward"
+    if not _build(board, variant, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True):
+        raise KitError(f"the profile {toward} does not configure for {board} {variant}: "
+                       f"{out_dir / 'toward.configure.log'}")
+    built = kconfig(out_dir / "profile" / "zephyr" / ".config")
+    plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
+                 fprime_settings(other_dir / "zephyr" / ".config"), variants.get(variant).model, built)
+    rows = [base]
+    for index, knob in enumerate(plan[1:], start=1):
+        row = _measure(knob, board, variant, profile, out_dir)
+        rows.append(row)
+        verdict = "build FAILED" if not row.built else ("nominal PASS" if row.passed else "nominal FAIL")
+        say(f"footprint: {index}/{len(plan)} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
+            f"({row.seconds:.0f} s)")
+    # Last, the other profile whole: every knob moved at once
+    rows.append(_measure(Knob(f"profile {toward}"), board, variant, toward, out_dir))
+    say(f"footprint: profile {toward}: {'built' if rows[-1].built else 'build FAILED'} {rows[-1].note}")
+    # "model": the variant, as `kit footprint --model` names it
+    (out_dir / "footprint.json").write_text(json.dumps(
+        {"board": board, "model": variant, "profile": profile, "toward": toward,
+         "rows": [asdict(r) for r in rows]}, indent=2) + "\n")
+    return rows
+
+
+def _delta(value: int | None, base: int | None) -> str:
+    if value is None or base is None:
+        return ""
+    return f"{value - base:+,d}"
+
+
+def table(rows: list[Row], board: str, model: str, profile: str, toward: str) -> Table:
+    """The ablation of one model: each knob's ROM and RAM against the
+    profile, the layers that moved most, and whether the nominal run passed."""
+    base = rows[0]
+    body: list[list[Any]] = []
+    for row in rows:
+        moved = []
+        for kind, layers, base_layers in (("ROM", row.rom_layers, base.rom_layers),
+                                          ("RAM", row.ram_layers, base.ram_layers)) if row.built else ():
+            changes = sorted(((layers.get(k, 0) - base_layers.get(k, 0), k) for k in set(layers) | set(base_layers)),
+                             key=lambda c: (-abs(c[0]), c[1]))
+            moved += [f"{kind} {k} {d:+,d}" for d, k in changes[:2] if d]
+        verdict = f"build failed: {row.note}" if not row.built else ("PASS" if row.passed else f"FAIL: {row.note}")
+        deltas = ("", "") if row is base else (_delta(row.rom, base.rom), _delta(row.ram, base.ram))
+        body.append([row.knob, row.rom if row.rom is not None else "", deltas[0],
+                     row.ram if row.ram is not None else "", deltas[1], "; ".join(moved), verdict])
+    return Table(f"F´ knobs on {board}, {model}: from {profile}, one knob at a time toward {toward} (bytes)",
+                 ["knob", "ROM", "ΔROM", "RAM", "ΔRAM", "layers moved most (ROM / RAM)", "nominal run"], body)
+
+
+def write_report(tables: list[Table], out_dir: Path) -> list[Path]:
+    """The ablation's report: Markdown and self-contained HTML, like the
+    design-review report's."""
+    intro: Section = Text("What each F´ knob costs", [
+        "Each row is one build: the profile's, or the profile with one knob moved; ΔROM and ΔRAM are against the "
+        "profile's build, static RAM as the linker places it (a knob that moves memory into the C heap shows the "
+        "arena it needs).",
+        "Each build then plays the nominal run under QEMU; a row that fails says why (its HALT, FATAL or HEAP "
+        "line).", CAVEAT])
+    sections: list[Section] = [intro, *tables]
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "report.md").write_text(render.to_markdown(sections, {}))
+    (out_dir / "report.html").write_text(render.to_html(sections))
+    return [out_dir / "report.md", out_dir / "report.html"]
+
+
+def load(path: Path) -> tuple[dict[str, str], list[Row]]:
+    """A footprint.json: its conditions (board, model, profile, toward) and rows."""
+    if not path.is_file():
+        raise KitError(f"no ablation at {path}: run scripts/kit footprint first")
+    data = json.loads(path.read_text())
+    rows = [Row(**row) for row in data["rows"]]
+    for row in rows:
+        if not row.built:  # the reason, as this version reads it from the build's log
+            row.note = build_failure(path.parent / f"{_slug(row.knob)}.build.log")
+    return ({k: str(data[k]) for k in ("board", "model", "profile", "toward")}, rows)
+
+
+def report_dir_of(board: str, profile: str) -> Path:
+    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{profile}-report"
+
+
+def out_dir_of(board: str, model: str, profile: str) -> Path:
+    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{model}-{profile}"

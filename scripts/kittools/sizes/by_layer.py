@@ -1,0 +1,169 @@
+# SPDX-License-Identifier: Apache-2.0
+"""ROM and RAM by module, from Zephyr's attribution of every symbol to its
+source path (size_report, from DWARF; run by kittools.sizes.size_report); the kit
+sorts those paths into the layers a baremetal-vs-RTOS decision is about.
+Symbols without a source path (linker-made tables, vtables, static
+constructors) are placed by their C++ namespace where it tells, otherwise
+counted as "unattributed".
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import hashlib
+import json
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+from kittools.sizes import size_report
+from kittools.workspace import KitError, environment
+
+FRAMEWORK = "F´ framework"
+SERVICES = "F´ services"
+GROUND_LINK = "F´ ground link (ComFprime chain, UART driver)"
+OS_LAYER = "OS layer (fprime-baremetal / fprime-zephyr / kit)"
+KIT = "kit deployment and components"
+ZEPHYR = "Zephyr kernel, arch, drivers"
+LIBC = "libc (picolibc, libgcc)"
+LIBSTDCXX = "libstdc++"
+UNATTRIBUTED = "unattributed"
+CATEGORIES = (FRAMEWORK, SERVICES, GROUND_LINK, OS_LAYER, KIT, ZEPHYR, LIBC, LIBSTDCXX, UNATTRIBUTED)
+
+# The components of the ground link (app/Top/instances.fpp): F´'s ComFprime
+# chain and fprime-zephyr's UART driver, by folder and by class name
+_LINK_COMPONENTS = ("ComQueue", "FprimeFramer", "FprimeDeframer", "FrameAccumulator", "FprimeRouter", "ComStub",
+                    "BufferManager", "ZephyrUartDriver", "FprimeFrameDetector")
+
+# ... and the link's instances in the topology (app/Top/instances.fpp), whose
+# objects hold the link's static RAM (the UART's receive ring among them)
+_LINK_INSTANCES = ("comQueue", "framer", "comStub", "frameAccumulator", "deframer", "router", "linkBuffers",
+                   "linkUart", "linkHealth")
+_LINK_INSTANCE_SYMBOLS = frozenset(f"_ZN3Kit{len(name)}{name}E" for name in _LINK_INSTANCES)
+
+_BY_PATH = (
+    # (substring of the source path, category); first match wins
+    *((f"/Svc/{name}/", GROUND_LINK) for name in _LINK_COMPONENTS),
+    ("/Drv/ZephyrUartDriver/", GROUND_LINK),
+    ("/deps/fprime-baremetal/", OS_LAYER),
+    ("/deps/fprime-zephyr/", OS_LAYER),
+    ("/rtos/", OS_LAYER),
+    ("/baremetal/", OS_LAYER),
+    ("/F-Prime/Svc/", SERVICES),
+    ("/deps/fprime/Svc/", SERVICES),
+    ("/deps/fprime/Drv/", SERVICES),
+    ("/F-Prime/", FRAMEWORK),
+    ("/deps/fprime/", FRAMEWORK),
+    ("/app/", KIT),
+    ("/deps/zephyr/", ZEPHYR),
+    ("/zephyr/", ZEPHYR),
+    ("libstdc++", LIBSTDCXX),
+    ("libsupc++", LIBSTDCXX),
+    ("/libgcc/", LIBC),
+    ("/build/gcc-", LIBSTDCXX),  # the toolchain's own build of its C++ runtime
+    ("newlib", LIBC),
+    ("picolibc", LIBC),
+    ("/libc/", LIBC),
+)
+
+_BY_SYMBOL = (
+    ("_ZN3Kit", KIT), ("_ZTVN3Kit", KIT), ("_ZN3Svc", SERVICES), ("_ZTVN3Svc", SERVICES), ("_ZN2Fw", FRAMEWORK),
+    ("_ZTVN2Fw", FRAMEWORK), ("_ZN2Os9Baremetal", OS_LAYER), ("_ZN2Os6Zephyr", OS_LAYER), ("_ZN2Os", FRAMEWORK),
+    ("_ZTVN2Os", FRAMEWORK), ("_ZNSt", LIBSTDCXX), ("_ZSt", LIBSTDCXX), ("__cxa", LIBSTDCXX), ("__gnu_cxx", LIBSTDCXX),
+)
+
+
+#: The niceness of size reports made beside other work (`reports(background=True)`)
+BACKGROUND_NICENESS = 19
+
+
+def reports(builds: list[Path], jobs: int = 2, background: bool = False) -> list[tuple[dict, dict]]:
+    """(rom, ram) reports of several builds (`report`), `jobs` builds at a
+    time; `background`: at the lowest CPU priority, so that they take only
+    the CPU time the work beside them leaves (the ground link's checks,
+    whose time-outs are the host's)."""
+    niceness = BACKGROUND_NICENESS if background else 0
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(lambda build: (report(build, "rom", niceness), report(build, "ram", niceness)), builds))
+
+
+def _make_reports(build_dir: Path, elf: Path, niceness: int = 0) -> None:
+    """<kind>-symbols.json in the build folder: Zephyr's size_report
+    attribution without its display tree (kittools.sizes.size_report), in a
+    process of its own so that two builds take two cores. PYTHONHASHSEED=0:
+    the tool gives a symbol that shares its address with another one name or
+    the other by the order of a Python set, so that two runs on one image
+    moved a few bytes between layers. `niceness`: run it under nice(1)."""
+    command = [sys.executable, "-m", "kittools.sizes.size_report", str(elf), str(build_dir)]
+    if niceness:
+        command = ["nice", "-n", str(niceness), *command]
+    result = subprocess.run(command, cwd=build_dir, env={**environment(), "PYTHONHASHSEED": "0"},
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    missing = [kind for kind in size_report.KINDS if not size_report.output(build_dir, kind).is_file()]
+    if result.returncode != 0 or missing:
+        raise KitError(f"the size report failed for {build_dir} ({' '.join(command)}): {result.stderr[-2000:]}")
+
+
+# Leaf identifiers are relative to the report's top-level groups
+_GROUP_PREFIX = {"ZEPHYR_BASE": "/deps/zephyr/", "OUTPUT_DIR": "/OUTPUT_DIR/", "WORKSPACE": "/"}
+
+
+def classify(identifier: str, group: str = "") -> str:
+    """Category of one leaf of a rom/ram report (its 'identifier', within
+    the top-level group named `group`)."""
+    path = _GROUP_PREFIX.get(group, "") + identifier.replace("\\", "/")
+    for needle, category in _BY_PATH:
+        if needle in path:
+            return category
+    symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
+    if symbol in _LINK_INSTANCE_SYMBOLS:
+        return GROUND_LINK
+    # Mangled C++ names spell each class name out (e.g. _ZTVN3Svc8ComQueueE)
+    if symbol.startswith(("_ZN3Svc", "_ZTVN3Svc", "_ZN6Zephyr", "_ZTVN6Zephyr")) and any(
+            name in symbol for name in _LINK_COMPONENTS):
+        return GROUND_LINK
+    for prefix, category in _BY_SYMBOL:
+        if symbol.startswith(prefix):
+            return category
+    return UNATTRIBUTED
+
+
+def _leaves(node: dict) -> Iterator[dict]:
+    children = node.get("children")
+    if not children:
+        yield node
+        return
+    for child in children:
+        yield from _leaves(child)
+
+
+def breakdown(report: dict) -> dict[str, int]:
+    """Bytes per category; sums to the report's total_size."""
+    sizes = {name: 0 for name in CATEGORIES}
+    for group in report["symbols"].get("children", []):
+        for leaf in _leaves(group):
+            sizes[classify(str(leaf.get("identifier", "")), str(group.get("name", "")))] += int(leaf.get("size", 0))
+    return sizes
+
+
+def report(build_dir: Path, kind: str, niceness: int = 0) -> dict:
+    """A build's rom or ram report (every symbol, its source path, its
+    bytes: kittools.sizes.size_report), made if missing or made from another
+    image. "Another image" is decided by content: a configure relinks
+    (Zephyr rewrites its linker snippets every time) into the same bytes,
+    and the reports take about 20 s of one core (DWARF)."""
+    if kind not in ("rom", "ram"):
+        raise ValueError(kind)
+    path = size_report.output(build_dir, kind)
+    made_from = build_dir / "size-reports.elf-sha256"
+    elf = build_dir / "zephyr" / "zephyr.elf"
+    if not elf.is_file():
+        raise KitError(f"{elf} is missing: build first")
+    image = hashlib.sha256(elf.read_bytes()).hexdigest()
+    if not path.is_file() or not made_from.is_file() or made_from.read_text().strip() != image:
+        _make_reports(build_dir, elf, niceness)
+        made_from.write_text(image + "\n")
+    loaded: dict[str, Any] = json.loads(path.read_text())
+    return loaded

@@ -1,0 +1,240 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The ground link's checks of `kit test`: the integration suite through
+fprime-gds, the raw link, fuzzing, the flood and the serial-load sweep."""
+
+from __future__ import annotations
+
+import concurrent.futures
+import json
+import sys
+import time
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any, Protocol, TypeVar
+
+from kittools import sweep
+from kittools.boards.scaffold import REFERENCE_BOARD
+from kittools.build import runner
+from kittools.link import flood, fuzz, ground, serial_sweep
+from kittools.suite import results
+from kittools.suite.counts import Tally, junit_tally, run_logged
+from kittools.suite.platforms import TWISTER_OUT
+from kittools.workspace import KIT_ROOT, KitError, check_board
+
+INTEGRATION = KIT_ROOT / "tests" / "integration"
+
+
+# The checks through fprime-gds run one build at a time: the integration
+# API's time-outs are the host's (two stations at once once missed a first
+# NO_OP's 10 s). Fuzzing, the flood, the serial-load sweep and the foreign
+# dictionary wait for the deployment's answers and pace on its own clock,
+# however long the host takes: two builds at a time, one QEMU per core (the
+# sweep's latencies are host-timed anyway: played three times, median and
+# spread; what it offers and delivers does not depend on the host).
+INTEGRATION_JOBS = 1
+RAW_LINK_JOBS = 2
+
+
+def ground_builds(required: bool = True) -> list[tuple[str, Path]]:
+    """(platform, build) of every build of the last twister run that can
+    play the ground scenario; none is an error where `required`."""
+    builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
+              if ground.serves_ground(build)]
+    if not builds and required:
+        raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
+    return builds
+
+
+def run_stations(log_dir: Path, select: str) -> Tally:
+    """The integration suite's tests matching `select` (pytest's -k)
+    through fprime-gds on every ground build of the last twister run, one
+    build at a time (kit test --quick: the NO_OP)."""
+    tally = Tally()
+    for platform, build in ground_builds():
+        tally.add(station_checks(platform, build, log_dir, select))
+    return tally
+
+
+def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: int = RAW_LINK_JOBS,
+                    required: bool = True) -> Tally:
+    """The ground-link checks of every build of the suite, each booted under
+    QEMU into its ground scenario: first tests/integration (F´'s
+    integration-test API, through fprime-gds's pytest plugin, with
+    fprime-gds on the build's link: kittools.link.ground), `jobs` builds at a
+    time; then the foreign dictionary, uplink fuzzing, the flood and the
+    serial-load sweep, `raw_link_jobs` builds at a time. Two builds never share a QEMU
+    pipe, a link socket or a GDS transport (each station's is its own). The
+    kit's own runner, not twister's pytest harness: that harness owns one
+    console and knows nothing of a second serial port or a GDS. Not
+    `required` (a shard of a split run): a run that made none checks none."""
+    builds = ground_builds(required)
+    tally = Tally()
+    for checks, workers in ((station_checks, jobs), (raw_link_checks, raw_link_jobs)):
+        with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
+            for result in pool.map(checks, [p for p, _ in builds], [b for _, b in builds],
+                                   [log_dir] * len(builds)):
+                tally.add(result)
+    return tally
+
+
+def _ground_name(platform: str, build: Path) -> str:
+    return f"{platform.replace('/', '_')}_{build.name}"
+
+
+def station_checks(platform: str, build: Path, log_dir: Path, select: str | None = None) -> Tally:
+    """One build's check that needs the host to itself: the integration
+    suite through fprime-gds (its tests matching `select`, pytest's -k)."""
+    name = _ground_name(platform, build)
+    logs = results.integration_logs(log_dir, platform, build.name)
+    xml = logs / "pytest.xml"
+    started = time.monotonic()
+    with ground.GroundStation(build, logs) as station:
+        run_logged([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
+              *(["-k", select] if select else []), *station.client_arguments(), "--logs", str(logs / "api"),
+              f"--junitxml={xml}"],
+             logs / "pytest.log")
+        console_text = station.console()
+    (logs / "console.log").write_text(console_text + "\n")
+    if not xml.is_file():
+        raise KitError(f"the integration suite wrote no report for {build}; see {logs / 'pytest.log'}")
+    tally = junit_tally(xml)
+    print(f"[kit]   {name}: {tally.passed} passed, {tally.failed} failed "
+          f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
+    return tally
+
+
+def raw_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
+    """One build's checks on the raw link, paced by the deployment's own
+    answers and clock, one after the other (they share its QEMU pipe and
+    link socket): another build's dictionary refused, uplink fuzzing, the
+    flood, and on SERIAL_SWEEP_BOARD the serial-load sweep."""
+    name = _ground_name(platform, build)
+    logs = results.integration_logs(log_dir, platform, build.name)
+    tally = foreign_dictionary_build(build, name, logs)
+    checks = [fuzz_build, flood_build]
+    if check_board(platform) == check_board(SERIAL_SWEEP_BOARD):
+        checks.append(serial_sweep_build)
+    for check in checks:
+        tally.add(check(build, name, logs))
+    return tally
+
+
+def foreign_dictionary_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build with a dictionary of another build (its own with
+    another project version, as a build of another commit has): the ground
+    tools must refuse it with their one message and leave no QEMU behind."""
+    own = ground.link_of(build).dictionary
+    foreign = logs / "foreign-dictionary.json"
+    data = json.loads(own.read_text())
+    data["metadata"]["projectVersion"] = f"{data['metadata']['projectVersion']}-another-build"
+    foreign.write_text(json.dumps(data, indent=2) + "\n")
+    link = ground.link_of(build, foreign)
+    try:
+        with ground.boot(link):
+            failure: str | None = "booted with another build's dictionary"
+    except KitError as error:
+        failure = None if "is not the one the firmware" in str(error) else f"refused for another reason: {error}"
+    if failure is None and not ground.socket_free(link.socket):
+        failure = "QEMU still holds the link socket after the refusal"
+    print(f"[kit]   {name}: another build's dictionary: {'refused' if failure is None else 'FAIL: ' + failure}",
+          flush=True)
+    return Tally(failed=1) if failure else Tally(passed=1)
+
+
+class _Recorded(Protocol):
+    def to_json(self) -> dict[str, Any]: ...
+
+
+_R = TypeVar("_R", bound=_Recorded)
+
+
+def _recorded(name: str, what: str, job: Callable[[], _R], path: Path) -> _R | None:
+    """Run a ground-link check and write its record; None (said) when it
+    could not run to its end."""
+    try:
+        outcome = job()
+    except KitError as error:
+        print(f"[kit]   {name}: {what}: FAIL: {error}", flush=True)
+        return None
+    path.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
+    return outcome
+
+
+#: The serial axes are swept on the reference board, every model (three
+#: plays per level, a minute or more per build): what a level delivers is
+#: bound by the line rate and the link driver, the same code on every board;
+#: the other boards get the flood and the fuzzing, which check the link's
+#: accounting and its halt-free recovery (CI time: issue 31)
+SERIAL_SWEEP_BOARD = REFERENCE_BOARD
+
+
+def serial_sweep_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and run the serial-load sweep on its link
+    (kittools.link.serial_sweep); the records go to serial.json beside the other
+    logs, where the board's results (results.from_twister) take them."""
+    started = time.monotonic()
+    outcome = _recorded(name, "serial-load sweep", lambda: serial_sweep.run(build),
+                        logs / results.SERIAL_SWEEP_FILE)
+    if outcome is None:
+        return Tally(failed=1)
+    found = outcome.sweep()
+    breaks = {f"{axis} {rg}": sweep.level_text(found.breaking_point(axis, rg), found.unit(axis))
+              for axis in found.axes() for rg in found.rate_groups()} if found else {}
+    print(f"[kit]   {name}: serial-load sweep, {len(outcome.lines)} points x rate groups, breaking points "
+          f"{breaks} ({time.monotonic() - started:.0f} s)", flush=True)
+    return Tally(passed=1)
+
+
+# Uplink fuzzing: a fixed seed, so two runs send the same bytes and must
+# give the same counts (the seed is in every record). Each model gets its
+# 10,000 invalid frames on the reference board; the other boards, where the
+# deployment is the same code, a quarter of that.
+FUZZ_SEED = 20261201
+FUZZ_INVALID_FRAMES = 10_000
+FUZZ_INVALID_FRAMES_OTHER_BOARDS = 2_500
+
+
+def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and fuzz its uplink (kittools.link.fuzz); the outcome
+    goes to fuzz.json beside the other logs."""
+    link = ground.link_of(build)
+    started = time.monotonic()
+    with ground.boot(link) as qemu:
+
+        def halted() -> str:
+            qemu.read_until(lambda line: False, 0.001)
+            return runner.halt_lines(qemu.lines)
+
+        reference = link.board.split("/")[0] == REFERENCE_BOARD
+        frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
+        try:
+            outcome = fuzz.run(link.socket, link.dictionary, FUZZ_SEED, frames, halted=halted)
+        except KitError as error:
+            # A failed check, not the end of `kit test`
+            (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
+            print(f"[kit]   {name}: fuzzing (seed {FUZZ_SEED}): FAIL: {error}", flush=True)
+            return Tally(failed=1)
+        (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
+    record = outcome.to_json()
+    (logs / "fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
+    failures = outcome.failures()
+    print(f"[kit]   {name}: fuzzing (seed {outcome.seed}): {outcome.invalid_sent} invalid frames "
+          f"{dict(sorted(outcome.sent.items()))}, {outcome.noops_answered}/{outcome.noops_sent} NO_OPs answered, "
+          f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
+          f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}", flush=True)
+    return Tally(failed=1) if failures else Tally(passed=1)
+
+
+def flood_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and flood its link (kittools.link.flood); the records
+    go to flood.json, where the board's results take them."""
+    started = time.monotonic()
+    outcome = _recorded(name, "flood", lambda: flood.run(build), logs / results.FLOOD_FILE)
+    if outcome is None:
+        return Tally(failed=1)
+    failures = outcome.failures()
+    slips = {line.split(" rg=")[1].split()[0]: line.split(" slips=")[1].split()[0] for line in outcome.sweep_lines}
+    print(f"[kit]   {name}: flood ({outcome.seconds:.1f} s at {outcome.baud} baud): {outcome.record()}, slips "
+          f"{slips} ({time.monotonic() - started:.0f} s): {'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}",
+          flush=True)
+    return Tally(failed=1) if failures else Tally(passed=1)

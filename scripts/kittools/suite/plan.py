@@ -1,0 +1,73 @@
+# SPDX-License-Identifier: Apache-2.0
+"""`kit test` as a plan: named steps in two lanes, run at once. The QEMU
+lane holds twister and what reads its builds; the host lane what needs no
+board (host and tooling tests, the porting check, CI's device path), which
+runs beside twister (whose start and last runs leave a core idle). Steps
+that must wait for the host lane (the ground link's checks, whose time-outs
+are the host's) wait on `host_done`."""
+
+from __future__ import annotations
+
+import concurrent.futures
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from kittools.log import say
+from kittools.suite.counts import Tally
+from kittools.workspace import one_at_a_time
+
+
+@dataclass
+class Step:
+    name: str
+    run: Callable[[], Tally]
+
+
+@dataclass
+class Plan:
+    qemu: list[Step] = field(default_factory=list)
+    host: list[Step] = field(default_factory=list)
+    #: Set once the host lane has ended
+    host_done: threading.Event = field(default_factory=threading.Event)
+
+    def add_qemu(self, name: str, run: Callable[[], Tally]) -> None:
+        self.qemu.append(Step(name, run))
+
+    def add_host(self, name: str, run: Callable[[], Tally]) -> None:
+        self.host.append(Step(name, run))
+
+    def run(self) -> int:
+        """Both lanes at once, the closing count, the exit status."""
+        started = time.monotonic()
+        with one_at_a_time("test"), concurrent.futures.ThreadPoolExecutor(max_workers=1) as beside:
+            host = beside.submit(run_steps, self.host)
+            host.add_done_callback(lambda _: self.host_done.set())
+            total = run_steps(self.qemu)
+            total.add(host.result())
+        say(f"all steps: {time.monotonic() - started:.0f} s")
+        print(f"total: {total.passed} passed, {total.failed} failed")
+        return 0 if total.failed == 0 and total.passed > 0 else 1
+
+
+def run_steps(steps: list[Step]) -> Tally:
+    """Run steps in order, a line as each starts and ends; their added count."""
+    total = Tally()
+    for step in steps:
+        say(f"{step.name} ...")
+        started = time.monotonic()
+        tally = step.run()
+        say(f"{step.name}: {tally.passed} passed, {tally.failed} failed ({time.monotonic() - started:.0f} s)")
+        total.add(tally)
+    return total
+
+
+def settle(future: concurrent.futures.Future[None], job: Callable[[], None]) -> None:
+    """Run a job in this thread and settle its future with its outcome."""
+    try:
+        job()
+    except BaseException as error:  # handed to whoever waits on the future
+        future.set_exception(error)
+    else:
+        future.set_result(None)

@@ -1,0 +1,45 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The boards of the suite: those run under QEMU (tests/deployment) and the
+real boards, built and not run (tests/boards)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from kittools.boards.scaffold import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
+from kittools.workspace import KIT_ROOT, KitError, check_board
+
+SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"
+#: Real boards, built and not run (no emulator): every model's build
+BUILD_ONLY_SUITE = KIT_ROOT / BOARDS_SUITE_FILE
+TWISTER_OUT = KIT_ROOT / "twister-out"
+
+
+def suite_boards(suite: Path = SUITE) -> list[str]:
+    """The boards the suite runs on: its common platform_allow list (with
+    BUILD_ONLY_SUITE, the real boards built and not run)."""
+    import yaml  # Zephyr's requirements bring PyYAML into the venv
+
+    try:
+        platforms = yaml.safe_load(suite.read_text())["common"]["platform_allow"]
+    except (OSError, KeyError, TypeError, yaml.YAMLError) as error:
+        raise KitError(f"{suite} names no platforms (common: platform_allow): {error}") from error
+    if not platforms:
+        raise KitError(f"{suite}: common: platform_allow is empty")
+    return [str(p) for p in platforms]
+
+
+def is_real_board(board: str) -> bool:
+    """A board the kit builds and does not run (tests/boards), however the
+    board target is spelled (nucleo_f401re, nucleo_f401re/stm32f401xe)."""
+    return check_board(board) in {check_board(real) for real in suite_boards(BUILD_ONLY_SUITE)}
+
+
+def check_runs_here(board: str) -> None:
+    """Refuse a real board where the command must run the deployment under
+    QEMU: the kit builds it (tests/boards) and runs the suite on it only
+    through device testing (kit test --device-testing)."""
+    if is_real_board(board):
+        raise KitError(f"{board} is a real board: the kit builds it (kit test, tests/boards) but cannot run it "
+                       f"here (no emulator; on the board itself: kit test --device-testing --hardware-map FILE). "
+                       f"Boards it runs on: {', '.join(suite_boards())}")
