@@ -8,8 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from kittools import cli, metrics, model, workspace
-from kittools.boards import scaffold
+from kittools import boards, cli, metrics, model, workspace
 from kittools.suite import platforms
 from kittools.workspace import KitError
 
@@ -137,7 +136,7 @@ def _quiet(_message: str) -> None:
 
 def test_unknown_board_is_refused_with_close_matches(tmp_path):
     with pytest.raises(KitError) as error:
-        scaffold.find_board("qemu_cortex_m4", _zephyr(tmp_path))
+        boards.find_board("qemu_cortex_m4", _zephyr(tmp_path))
     message = str(error.value)
     assert message.startswith("Zephyr 4.0.0 has no board 'qemu_cortex_m4'. Close matches: ")
     assert "qemu_cortex_m3" in message and "qemu_cortex_m0" in message and "west boards" in message
@@ -145,61 +144,61 @@ def test_unknown_board_is_refused_with_close_matches(tmp_path):
 
 def test_without_a_version_file_the_message_names_the_pinned_zephyr(tmp_path):
     with pytest.raises(KitError, match="^the pinned Zephyr has no board 'zzz'"):
-        scaffold.find_board("zzz", _zephyr(tmp_path, version=False))
+        boards.find_board("zzz", _zephyr(tmp_path, version=False))
 
 
 def test_a_board_name_stands_for_its_only_target_and_not_for_several(tmp_path):
     zephyr = _zephyr(tmp_path)
-    assert scaffold.find_board("frdm_k64f", zephyr).identifier == "frdm_k64f/mk64f12"
-    assert scaffold.find_board("mps2/an385", zephyr).identifier == "mps2/an385"
+    assert boards.find_board("frdm_k64f", zephyr).identifier == "frdm_k64f/mk64f12"
+    assert boards.find_board("mps2/an385", zephyr).identifier == "mps2/an385"
     # mps2/an521 is two targets (cpu0, cpu1): neither is guessed
     with pytest.raises(KitError, match="'mps2/an521' is several boards .*: mps2/an521/cpu0, mps2/an521/cpu1"):
-        scaffold.find_board("mps2/an521", zephyr)
+        boards.find_board("mps2/an521", zephyr)
     with pytest.raises(KitError, match="'mps2' is several boards"):
-        scaffold.find_board("mps2", zephyr)
+        boards.find_board("mps2", zephyr)
 
 
 def test_a_missing_zephyr_says_to_run_setup(tmp_path):
     with pytest.raises(KitError, match="scripts/setup.sh"):
-        scaffold.find_board("qemu_cortex_m3", tmp_path / "nothing")
+        boards.find_board("qemu_cortex_m3", tmp_path / "nothing")
 
 
 def test_a_board_of_another_architecture_is_refused(tmp_path):
     root = _kit(tmp_path)
     with pytest.raises(KitError, match="qemu_x86 is a 'x86' board .* the kit is ARM only: .*arm-none-eabi"):
-        scaffold.new_board("qemu_x86", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
+        boards.new_board("qemu_x86", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
     assert not (root / "boards" / "qemu_x86").exists()
 
 
 # --- memory -----------------------------------------------------------------
 
 def test_memory_comes_from_the_platform_file(tmp_path):
-    m3 = scaffold.find_board("qemu_cortex_m3", _zephyr(tmp_path))
+    m3 = boards.find_board("qemu_cortex_m3", _zephyr(tmp_path))
     assert (m3.ram_kib, m3.flash_kib, m3.arch) == (64, 256, "arm")
 
 
 def test_memory_comes_from_the_devicetree_and_its_includes(tmp_path):
-    an385 = scaffold.find_board("mps2/an385", _zephyr(tmp_path))
+    an385 = boards.find_board("mps2/an385", _zephyr(tmp_path))
     # sram0 in the included .dtsi; flash0's own reg, not its partition's
     assert (an385.ram_kib, an385.flash_kib) == (4096, 2048)
 
 
 def test_devicetree_sizes_in_dt_size_k_and_label_overrides(tmp_path):
-    nucleo = scaffold.find_board("nucleo_small", _zephyr(tmp_path))
+    nucleo = boards.find_board("nucleo_small", _zephyr(tmp_path))
     assert (nucleo.ram_kib, nucleo.flash_kib) == (20, 64)
 
 
 def test_unknown_memory_says_how_to_find_out(tmp_path):
-    mystery = scaffold.find_board("mystery", _zephyr(tmp_path))
+    mystery = boards.find_board("mystery", _zephyr(tmp_path))
     assert (mystery.ram_kib, mystery.flash_kib) == (None, None)
     with pytest.raises(KitError, match="fit cannot be checked.*'Memory region' lines"):
-        scaffold.new_board("mystery", root=_kit(tmp_path), zephyr=_zephyr(tmp_path), say=_quiet)
+        boards.new_board("mystery", root=_kit(tmp_path), zephyr=_zephyr(tmp_path), say=_quiet)
 
 
 def test_a_board_too_small_is_refused_with_the_numbers(tmp_path):
     root = _kit(tmp_path)
     with pytest.raises(KitError) as error:
-        scaffold.new_board("qemu_cortex_m0", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
+        boards.new_board("qemu_cortex_m0", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
     message = str(error.value)
     assert "qemu_cortex_m0 cannot hold the deployment as measured in tests/baselines/qemu_cortex_m3.json" in message
     # The smallest model's need, named: if it does not fit, none does
@@ -212,9 +211,9 @@ def test_a_board_too_small_is_refused_with_the_numbers(tmp_path):
 
 def test_flash_that_is_short_is_named_with_its_levers(tmp_path):
     root = _kit(tmp_path, {"baremetal": (300_000, 1000), "rtos": (280_000, 1000)})
-    m0 = scaffold.find_board("qemu_cortex_m0", _zephyr(tmp_path))
+    m0 = boards.find_board("qemu_cortex_m0", _zephyr(tmp_path))
     with pytest.raises(KitError) as error:
-        scaffold.check_fit(m0, root / "tests" / "baselines" / "qemu_cortex_m3.json")
+        boards.check_fit(m0, root / "tests" / "baselines" / "qemu_cortex_m3.json")
     message = str(error.value)
     assert "flash: the smallest model, rtos, needs 273.4 KiB, the board has 256 KiB" in message
     assert "baremetal" not in message
@@ -231,14 +230,14 @@ def test_the_fit_is_the_smallest_models_and_a_larger_one_short_is_said(tmp_path)
     zephyr = _zephyr(tmp_path)
     _platform(zephyr, "qemu/mid", "qemu_mid", "identifier: qemu_mid\narch: arm\nram: 48\nflash: 256\n"
               "simulation: qemu\n")
-    lines = scaffold.check_fit(scaffold.find_board("qemu_mid", zephyr),
+    lines = boards.check_fit(boards.find_board("qemu_mid", zephyr),
                               root / "tests" / "baselines" / "qemu_cortex_m3.json")
     assert lines[0] == ("baremetal_passive (the smallest): flash 140.4 of 256 KiB (115.6 KiB spare), "
                         "RAM 43.4 of 48 KiB (4.6 KiB spare)")
     assert "rtos does not fit: 13.7 KiB of RAM short; its build fails until the deployment shrinks" \
         in "\n".join(lines)
     said: list[str] = []
-    scaffold.new_board("qemu_mid", root=root, zephyr=zephyr, say=said.append)
+    boards.new_board("qemu_mid", root=root, zephyr=zephyr, say=said.append)
     assert "the board checked against its smallest model, baremetal_passive" in "\n".join(said)
 
 
@@ -247,7 +246,7 @@ def test_the_fit_is_the_smallest_models_and_a_larger_one_short_is_said(tmp_path)
 def test_the_scaffold_copies_the_reference_with_todo_headers(tmp_path):
     root = _kit(tmp_path)
     said: list[str] = []
-    folder = scaffold.new_board("mps2/an385", root=root, zephyr=_zephyr(tmp_path), say=said.append)
+    folder = boards.new_board("mps2/an385", root=root, zephyr=_zephyr(tmp_path), say=said.append)
     assert folder == root / "boards" / "mps2_an385"
     assert sorted(p.name for p in folder.iterdir()) == sorted(REFERENCE_FILES)
     for name, original in REFERENCE_FILES.items():
@@ -276,12 +275,12 @@ def test_the_scaffold_copies_the_reference_with_todo_headers(tmp_path):
 def test_the_scaffold_refuses_to_overwrite_a_port_unless_forced(tmp_path):
     root = _kit(tmp_path)
     zephyr = _zephyr(tmp_path)
-    folder = scaffold.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    folder = boards.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     (folder / "kit.conf").write_text("CONFIG_QEMU_ICOUNT_SHIFT=5\n")
     with pytest.raises(KitError, match="boards/mps2_an385 exists already.*--force"):
-        scaffold.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+        boards.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     assert (folder / "kit.conf").read_text() == "CONFIG_QEMU_ICOUNT_SHIFT=5\n"
-    scaffold.new_board("mps2/an385", root=root, zephyr=zephyr, force=True, say=_quiet)
+    boards.new_board("mps2/an385", root=root, zephyr=zephyr, force=True, say=_quiet)
     assert "CONFIG_QEMU_ICOUNT_SHIFT=4" in (folder / "kit.conf").read_text()
     suite = (root / "tests" / "deployment" / "testcase.yaml").read_text()
     assert suite.count("mps2/an385") == 5  # the second run added nothing
@@ -290,10 +289,10 @@ def test_the_scaffold_refuses_to_overwrite_a_port_unless_forced(tmp_path):
 def test_scaffolding_from_an_unresolved_port_does_not_stack_headers(tmp_path):
     root = _kit(tmp_path)
     zephyr = _zephyr(tmp_path)
-    scaffold.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    boards.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     (root / "tests" / "baselines" / "mps2_an385.json").write_text(json.dumps(_results(FOOTPRINT)))
     _platform(zephyr, "big", "big_board", "identifier: big_board\narch: arm\nram: 512\nflash: 2048\nsimulation: qemu\n")
-    folder = scaffold.new_board("big_board", "mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+    folder = boards.new_board("big_board", "mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     for name in ("kit.conf", "app.overlay"):
         text = (folder / name).read_text()
         assert text.count("TODO(port): copied from") == 1 and "copied from boards/mps2_an385/ for big_board" in text
@@ -304,12 +303,12 @@ def test_a_port_covering_the_board_or_a_missing_reference_is_refused(tmp_path):
     zephyr = _zephyr(tmp_path)
     (root / "boards" / "mps2").mkdir()  # covers every mps2 target
     with pytest.raises(KitError, match="boards/mps2 already covers mps2/an385"):
-        scaffold.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
+        boards.new_board("mps2/an385", root=root, zephyr=zephyr, say=_quiet)
     with pytest.raises(KitError, match="reference board 'nrf52840dk' has no kit port. Ported boards: mps2, "
                                        "qemu_cortex_m3"):
-        scaffold.new_board("qemu_cortex_m3", "nrf52840dk", root=root, zephyr=zephyr, force=True, say=_quiet)
+        boards.new_board("qemu_cortex_m3", "nrf52840dk", root=root, zephyr=zephyr, force=True, say=_quiet)
     with pytest.raises(KitError, match="the reference itself"):
-        scaffold.new_board("qemu_cortex_m3", root=root, zephyr=zephyr, force=True, say=_quiet)
+        boards.new_board("qemu_cortex_m3", root=root, zephyr=zephyr, force=True, say=_quiet)
 
 
 def test_the_cli_scaffolds_with_from(tmp_path, monkeypatch, capsys):
@@ -326,7 +325,7 @@ def test_the_cli_scaffolds_with_from(tmp_path, monkeypatch, capsys):
 # --- twister lists ----------------------------------------------------------
 
 def test_twister_lists_gain_the_board_once_and_keep_their_comments():
-    once = scaffold.add_to_twister_lists(SUITE, "mps2/an385")
+    once = boards.add_to_twister_lists(SUITE, "mps2/an385")
     assert once == SUITE.replace(
         '    - "mps2/an521"   # quoted, with a comment\n',
         '    - "mps2/an521"   # quoted, with a comment\n    - mps2/an385\n').replace(
@@ -337,12 +336,12 @@ def test_twister_lists_gain_the_board_once_and_keep_their_comments():
         "platform_allow: qemu_cortex_m3 mps2/an521\n",
         "platform_allow: qemu_cortex_m3 mps2/an521 mps2/an385\n").replace(
         "[qemu_cortex_m3]  # flow style", "[qemu_cortex_m3, mps2/an385]  # flow style")
-    assert scaffold.add_to_twister_lists(once, "mps2/an385") == once
+    assert boards.add_to_twister_lists(once, "mps2/an385") == once
 
 
 def test_twister_lists_that_name_the_board_already_are_skipped():
     # quoted and commented items count; the other lists still gain it
-    assert scaffold.add_to_twister_lists(SUITE, "mps2/an521") == SUITE.replace(
+    assert boards.add_to_twister_lists(SUITE, "mps2/an521") == SUITE.replace(
         "  integration_platforms:\n    - qemu_cortex_m3\n",
         "  integration_platforms:\n    - qemu_cortex_m3\n    - mps2/an521\n").replace(
         "      - qemu_cortex_m3   # only here\n",
@@ -351,7 +350,7 @@ def test_twister_lists_that_name_the_board_already_are_skipped():
 
 
 def test_a_list_at_the_end_of_the_file_gains_a_line():
-    assert scaffold.add_to_twister_lists("common:\n  platform_allow:\n  - a", "b") == \
+    assert boards.add_to_twister_lists("common:\n  platform_allow:\n  - a", "b") == \
         "common:\n  platform_allow:\n  - a\n  - b\n"
 
 
@@ -359,19 +358,19 @@ def test_the_twister_files_are_every_suites_and_the_samples(tmp_path):
     root = _kit(tmp_path)
     (root / "tests" / "other").mkdir()
     (root / "tests" / "other" / "testcase.yaml").write_text("tests:\n  x:\n    platform_allow:\n      - a\n")
-    names = [str(p.relative_to(root)) for p in scaffold.twister_files(root)]
+    names = [str(p.relative_to(root)) for p in boards.twister_files(root)]
     assert names == ["tests/boards/testcase.yaml", "tests/deployment/testcase.yaml", "tests/other/testcase.yaml",
                      "tests/floor/paths/testcase.yaml", "app/sample.yaml"]
     # The one rule: a QEMU board every suite but the real boards' list, a real board that list alone
-    qemu = [str(p.relative_to(root)) for p in scaffold.suite_files(root, emulated=True)]
+    qemu = [str(p.relative_to(root)) for p in boards.suite_files(root, emulated=True)]
     assert qemu == names[1:]
-    assert scaffold.suite_files(root, emulated=False) == [root / "tests" / "boards" / "testcase.yaml"]
+    assert boards.suite_files(root, emulated=False) == [root / "tests" / "boards" / "testcase.yaml"]
 
 
 def test_a_qemu_board_joins_the_qemu_suites_and_not_the_real_boards_list(tmp_path, monkeypatch):
     root = _kit(tmp_path)
     said: list[str] = []
-    scaffold.new_board("mps2/an385", root=root, zephyr=_zephyr(tmp_path), say=said.append)
+    boards.new_board("mps2/an385", root=root, zephyr=_zephyr(tmp_path), say=said.append)
     for suite in ("tests/deployment/testcase.yaml", "tests/floor/paths/testcase.yaml", "app/sample.yaml"):
         assert "- mps2/an385" in (root / suite).read_text(), suite
     assert (root / "tests" / "boards" / "testcase.yaml").read_text() == BOARDS_SUITE
@@ -403,9 +402,9 @@ def test_board_folders_are_found_by_full_target_then_board_name(tmp_path):
 
 @pytest.mark.skipif(not (workspace.DEPS / "zephyr" / "boards").is_dir(), reason="workspace not provisioned")
 def test_the_pinned_zephyr_knows_both_ported_boards():
-    m3 = scaffold.find_board("qemu_cortex_m3")
+    m3 = boards.find_board("qemu_cortex_m3")
     assert (m3.identifier, m3.arch, m3.ram_kib, m3.flash_kib) == ("qemu_cortex_m3", "arm", 64, 256)
-    an385 = scaffold.find_board("mps2/an385")
+    an385 = boards.find_board("mps2/an385")
     assert (an385.arch, an385.ram_kib, an385.flash_kib) == ("arm", 4096, 4096)  # from its devicetree
 
 
@@ -448,7 +447,7 @@ def _real_board(tmp_path: Path) -> tuple[Path, Path]:
 def test_a_real_board_gets_its_hal_its_link_uart_and_joins_the_builds_only(tmp_path):
     root, zephyr = _real_board(tmp_path)
     said: list[str] = []
-    folder = scaffold.new_board("nucleo_f401re", root=root, zephyr=zephyr, say=said.append)
+    folder = boards.new_board("nucleo_f401re", root=root, zephyr=zephyr, say=said.append)
     assert (folder / "hal").read_text().splitlines()[-1] == "hal_stm32 deps/modules/hal/stm32"
     west = (root / "west.yml").read_text()
     assert "          - cmsis   # every Cortex-M\n          - hal_stm32\n    - name: fprime" in west
@@ -459,17 +458,17 @@ def test_a_real_board_gets_its_hal_its_link_uart_and_joins_the_builds_only(tmp_p
     assert "nucleo_f401re" not in (root / "app" / "sample.yaml").read_text()
     assert any("scripts/setup.sh" in line for line in said)
     # Once allow-listed, the manifest is left as it is
-    assert scaffold.allow_module(west, "hal_stm32") == west
+    assert boards.allow_module(west, "hal_stm32") == west
 
 
 def test_a_real_boards_hal_is_named_from_the_socs_folder(tmp_path):
     _, zephyr = _real_board(tmp_path)
-    found, hals = scaffold.hal_module(scaffold.find_board("nucleo_f401re", zephyr), zephyr)
-    assert found == scaffold.HalModule("hal_stm32", "deps/modules/hal/stm32",
+    found, hals = boards.hal_module(boards.find_board("nucleo_f401re", zephyr), zephyr)
+    assert found == boards.HalModule("hal_stm32", "deps/modules/hal/stm32",
                                       "019d8255333f96bdd47d26b44049bd3e7af8ef55")
     assert hals == ["hal_nordic", "hal_stm32"]
-    assert scaffold.find_board("nucleo_f401re", zephyr).emulated is False
-    assert scaffold.find_board("mps2/an385", zephyr).emulated is True
+    assert boards.find_board("nucleo_f401re", zephyr).emulated is False
+    assert boards.find_board("mps2/an385", zephyr).emulated is True
 
 
 # --- A real board that enables its console alone: a UART of its SoC, on the HAL's pins
@@ -577,19 +576,19 @@ def _console_only_board(tmp_path: Path, pinctrl: bool = True) -> tuple[Path, Pat
 
 def test_a_spare_uart_is_a_disabled_one_of_the_soc_on_free_pins_of_the_hals_pinctrl_file(tmp_path):
     root, zephyr = _console_only_board(tmp_path)
-    found = scaffold.find_board("nucleo_l1x", zephyr)
-    assert scaffold.link_uarts(found.platform_file) == []  # the console alone
-    spare, reason = scaffold.spare_uart(found, zephyr, root / "deps" / "modules" / "hal" / "stm32")
+    found = boards.find_board("nucleo_l1x", zephyr)
+    assert boards.link_uarts(found.platform_file) == []  # the console alone
+    spare, reason = boards.spare_uart(found, zephyr, root / "deps" / "modules" / "hal" / "stm32")
     # usart1 before uart4 (whose pins the board's SPI takes anyway); its TX
     # not on PA9 (the button's), the connector's map being no use of PA10
-    assert spare == scaffold.SpareUart("usart1", "usart1_tx_pb6", "usart1_rx_pa10", "st/l1/stm32l152retx-pinctrl.dtsi")
+    assert spare == boards.SpareUart("usart1", "usart1_tx_pb6", "usart1_rx_pa10", "st/l1/stm32l152retx-pinctrl.dtsi")
     assert reason == "" and (spare.pin(spare.tx), spare.pin(spare.rx)) == ("PB6", "PA10")
 
 
 def test_a_console_only_real_board_gets_a_uart_of_its_soc_written_into_its_overlay(tmp_path):
     root, zephyr = _console_only_board(tmp_path)
     said: list[str] = []
-    folder = scaffold.new_board("nucleo_l1x", root=root, zephyr=zephyr, say=said.append)
+    folder = boards.new_board("nucleo_l1x", root=root, zephyr=zephyr, say=said.append)
     overlay = (folder / "app.overlay").read_text()
     assert "uart1;" not in overlay.replace("usart1;", "")  # not the QEMU reference's &uart1
     assert "kit,link-uart = &usart1;" in overlay
@@ -607,7 +606,7 @@ def test_a_console_only_real_board_gets_a_uart_of_its_soc_written_into_its_overl
 def test_without_the_hals_pinctrl_file_the_overlay_chooses_no_link_and_says_why(tmp_path):
     root, zephyr = _console_only_board(tmp_path, pinctrl=False)
     said: list[str] = []
-    folder = scaffold.new_board("nucleo_l1x", root=root, zephyr=zephyr, say=said.append)
+    folder = boards.new_board("nucleo_l1x", root=root, zephyr=zephyr, say=said.append)
     overlay = (folder / "app.overlay").read_text()
     # No UART named that the devicetree lacks: the build stops at the kit's own #error
     assert overlay.endswith(" */\n") and "/ {" not in overlay and "&uart1" not in overlay  # comments alone
@@ -620,7 +619,7 @@ def test_no_free_pins_is_said_with_the_pins_in_use(tmp_path):
     root, zephyr = _console_only_board(tmp_path)
     dts = zephyr / "boards" / "st" / "nucleo_l1x" / "nucleo_l1x.dts"
     dts.write_text(dts.read_text().replace("<&gpioa 9 GPIO_ACTIVE_LOW>", "<&gpioa 9 0>, <&gpioa 10 0>, <&gpiob 7 0>"))
-    spare, reason = scaffold.spare_uart(scaffold.find_board("nucleo_l1x", zephyr), zephyr,
+    spare, reason = boards.spare_uart(boards.find_board("nucleo_l1x", zephyr), zephyr,
                                      root / "deps" / "modules" / "hal" / "stm32")
     assert spare is None
     assert reason.startswith("st/l1/stm32l152retx-pinctrl.dtsi names no TX and RX pins free on this board for "

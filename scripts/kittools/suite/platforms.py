@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from kittools.boards.scaffold import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
+from kittools.boards.suites import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
 from kittools.workspace import KIT_ROOT, KitError, check_board
 
 SUITE = KIT_ROOT / "tests" / "deployment" / "testcase.yaml"

@@ -10,7 +10,7 @@ import sys
 import time
 from pathlib import Path
 
-from kittools.boards.scaffold import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
+from kittools.boards.suites import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
 from kittools.suite.counts import Tally, twister_tally
 from kittools.suite.platforms import suite_boards
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment

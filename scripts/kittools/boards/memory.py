@@ -1,0 +1,75 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Whether a board holds the deployment: its memory against the footprint
+measured on a ported board (that board's results file)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from kittools import model
+from kittools.boards.zephyr import ZephyrBoard
+from kittools.suite import results
+from kittools.workspace import VARIANTS, KitError
+
+# What to shrink when a resource is short, from docs/porting.md, "Memory budget"
+_LEVERS = {
+    "flash": "F´'s configuration (app/config/) and the components built in",
+    "RAM": "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE (app/prj.conf), the queue depths (app/Top/instances.fpp), "
+           "the stack table (Tables.fpp), F´'s configuration (app/config/)",
+}
+
+
+def smallest_models(measured: model.Results) -> dict[str, str]:
+    """Per resource ("flash", "RAM"), the variant of a results file that
+    needs the least of it: the model a small board can still take."""
+    if not measured.variants:
+        raise KitError("the reference's results have no variant to measure the deployment from")
+    need = {"flash": model.ROM, "RAM": model.RAM}
+    return {what: min(measured.variants, key=lambda v: (measured.variants[v].metrics[metric], v))
+            for what, metric in need.items()}
+
+
+def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -> list[str]:
+    """The deployment's measured need (a ported board's results file)
+    against the board's memory, from the smallest model (per resource, the
+    variant that needs the least): KitError if even it does not fit, named.
+    Returns a headroom line per variant, and for a larger model the board
+    cannot hold, a line saying so (its build in kit test fails until the
+    deployment shrinks)."""
+    shown_as = shown_as or str(baseline)
+    if board.ram_kib is None or board.flash_kib is None:
+        raise KitError(f"the memory of {board.identifier} is unknown (no ram/flash in {board.platform_file.name}, "
+                       "no size of its zephyr,sram / zephyr,flash nodes in the board's own devicetree), so the fit "
+                       f"cannot be checked. Find out: build once (west build -b {board.identifier} -T app/kit.rtos) "
+                       "and read the linker's 'Memory region' lines, or the board's documentation.")
+    measured = results.load(baseline)
+    # Every model, or the smallest might be one of those measured only
+    for variant in VARIANTS:
+        if variant not in measured.variants:
+            raise KitError(f"{shown_as} has no {variant} variant to measure the deployment from")
+    have = {"flash": board.flash_kib * 1024, "RAM": board.ram_kib * 1024}
+    need = {variant: {"flash": found.metrics[model.ROM], "RAM": found.metrics[model.RAM]}
+            for variant, found in measured.variants.items()}
+    smallest = smallest_models(measured)
+    short = [f"{what}: the smallest model, {smallest[what]}, needs {need[smallest[what]][what] / 1024:.1f} KiB, "
+             f"the board has {have[what] / 1024:.0f} KiB" for what in ("flash", "RAM")
+             if need[smallest[what]][what] > have[what]]
+    if short:
+        levers = "; ".join(f"{what}: {_LEVERS[what]}" for what in ("flash", "RAM")
+                           if need[smallest[what]][what] > have[what])
+        raise KitError(f"{board.identifier} cannot hold the deployment as measured in {shown_as}: "
+                       + "; ".join(short) + ". Shrink the deployment first (docs/porting.md, 'Memory budget'): "
+                       + levers + ".")
+    lines: list[str] = []
+    for variant in sorted(need, key=lambda v: (need[v]["flash"], v)):
+        spare = {what: have[what] - need[variant][what] for what in ("flash", "RAM")}
+        mark = " (the smallest)" if variant in smallest.values() else ""
+        lines.append(f"{variant}{mark}: " + ", ".join(
+            f"{what} {need[variant][what] / 1024:.1f} of {have[what] / 1024:.0f} KiB "
+            f"({spare[what] / 1024:.1f} KiB spare)" for what in ("flash", "RAM")))
+        over = [f"{-spare[what] / 1024:.1f} KiB of {what}" for what in ("flash", "RAM") if spare[what] < 0]
+        if over:
+            lines.append(f"{variant} does not fit: {' and '.join(over)} short; its build fails until the "
+                         "deployment shrinks (docs/porting.md, 'Memory budget')")
+    return lines
+

@@ -1,0 +1,140 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The kit's YAML files edited as text, their comments and layout kept: a
+new board joins the twister files' platform lists (suite_files: a QEMU board
+the suites that run, a real board the boards built and not run), and a real
+board's HAL joins west.yml's allow-list (allow_module)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from pathlib import Path
+
+from kittools.boards.zephyr import ZephyrBoard
+from kittools.workspace import KitError
+
+# Twister files whose platform lists name the kit's boards, relative to the kit
+# The suite's, the kernel floor's (tests/floor/<app>/) and the samples'
+TWISTER_GLOBS = ("tests/*/testcase.yaml", "tests/*/*/testcase.yaml", "app/sample.yaml")
+TWISTER_LIST_KEYS = ("platform_allow", "integration_platforms")
+
+#: Real boards: built for every model, not run (no emulator)
+BUILD_ONLY_SUITE = "tests/boards/testcase.yaml"
+
+
+def _item_name(item: str) -> str:
+    """A list item as a name: no comment, no quotes."""
+    return item.split(" #", 1)[0].strip().strip("'\"")
+
+
+def _add_inline(rest: str, identifier: str) -> str:
+    """A list written on the key's line: `[a, b]` or twister's `a b`; the
+    spacing around it and its comment stay as they were."""
+    value, hash_sign, comment = rest.partition(" #")
+    lead, core, trail = re.fullmatch(r"(\s*)(.*?)(\s*)", value).groups()  # type: ignore[union-attr]
+    if core.startswith("["):
+        if not core.endswith("]"):
+            return rest  # a flow list over several lines: left alone rather than mangled
+        inner = core[1:-1].rstrip()
+        if identifier in [_item_name(n) for n in inner.split(",")]:
+            return rest
+        core = f"[{inner}{', ' if inner.strip() else ''}{identifier}]"
+    elif identifier in [_item_name(n) for n in core.split()]:
+        return rest
+    else:
+        core = f"{core} {identifier}"
+    return f"{lead}{core}{trail}{hash_sign}{comment}"
+
+
+def add_to_twister_lists(text: str, identifier: str) -> str:
+    """`identifier` added once to every platform_allow / integration_platforms
+    list of a twister file, editing the text so its comments and layout stay:
+    a `- identifier` line after the list's last item, at its indentation."""
+    key = re.compile(rf"^(?P<indent>[ \t]*)(?:{'|'.join(TWISTER_LIST_KEYS)}):(?P<rest>.*?)(?P<eol>\r?\n?)$")
+    lines = text.splitlines(keepends=True)
+    out: list[str] = []
+    index = 0
+    while index < len(lines):
+        match = key.match(lines[index])
+        index += 1
+        if match is None:
+            out.append(lines[index - 1])
+            continue
+        rest = match.group("rest")
+        if rest.split(" #", 1)[0].strip():
+            out.append(lines[index - 1][:match.start("rest")] + _add_inline(rest, identifier) + match.group("eol"))
+            continue
+        out.append(lines[index - 1])
+        # The block list: its items, and the comments and blank lines between them
+        item_indent: str | None = None
+        block: list[str] = []
+        last_item = -1
+        while index < len(lines):
+            line = lines[index]
+            item = re.match(r"^([ \t]*)-(?:[ \t]+(.*))?$", line.rstrip("\r\n"))
+            if item and len(item.group(1)) >= len(match.group("indent")) and item_indent in (None, item.group(1)):
+                item_indent = item.group(1)
+                last_item = len(block)
+            elif line.strip() and not line.lstrip().startswith("#"):
+                break
+            block.append(line)
+            index += 1
+        names = [_item_name(re.sub(r"^\s*-", "", line)) for line in block
+                 if re.match(r"^\s*-", line) and not line.lstrip().startswith("#")]
+        if last_item >= 0 and identifier not in names:
+            ending = "\r\n" if block[last_item].endswith("\r\n") else "\n"
+            if not block[last_item].endswith("\n"):
+                block[last_item] += ending  # the list ended the file
+            block.insert(last_item + 1, f"{item_indent}- {identifier}{ending}")
+        out.extend(block)
+    return "".join(out)
+
+
+def twister_files(root: Path) -> list[Path]:
+    """The twister files whose platform lists name the kit's boards."""
+    return [path for pattern in TWISTER_GLOBS for path in sorted(root.glob(pattern)) if path.is_file()]
+
+
+
+def suite_files(root: Path, emulated: bool) -> list[Path]:
+    """The twister files a new board joins: the one rule for both kinds. A
+    QEMU board joins every suite that runs (the deployment's, the kernel
+    floor's, the samples'); a real board only the boards built and not run
+    (BUILD_ONLY_SUITE), which is how `kit compare` and `kit test` tell it is
+    one (cli.is_real_board): a QEMU board listed there would be refused."""
+    build_only = root / BUILD_ONLY_SUITE
+    if not emulated:
+        return [build_only]
+    return [path for path in twister_files(root) if path != build_only]
+
+
+def join_suite(root: Path, board: ZephyrBoard, say: Callable[[str], None]) -> None:
+    identifier = board.identifier
+    for path in suite_files(root, board.emulated):
+        if not path.is_file():
+            raise KitError(f"{path.relative_to(root)} is missing: a real board joins its platform list")
+        before = path.read_text()
+        after = add_to_twister_lists(before, identifier)
+        name = path.relative_to(root)
+        if after != before:
+            path.write_text(after)
+            say(f"twister: added {identifier} to the platform lists of {name}")
+        else:
+            say(f"twister: {name} unchanged (its lists name {identifier} already, or it has none)")
+
+
+
+def allow_module(west_yml: str, module: str) -> str:
+    """west.yml with `module` in the zephyr import's name-allowlist (once),
+    its comments and layout kept."""
+    # The list's items: the lines at the first item's indentation
+    match = re.search(r"^[ \t]*name-allowlist:[ \t]*\r?\n"
+                      r"(?P<items>(?P<item_indent>[ \t]+)-[^\n]*\n(?:(?P=item_indent)-[^\n]*\n)*)",
+                      west_yml, re.MULTILINE)
+    if match is None:
+        raise KitError("west.yml has no name-allowlist under the zephyr project: add the module by hand")
+    items = match.group("items")
+    if module in [_item_name(re.sub(r"^\s*-", "", line)) for line in items.splitlines()]:
+        return west_yml
+    return west_yml[:match.end("items")] + f"{match.group('item_indent')}- {module}\n" + west_yml[match.end("items"):]
+
