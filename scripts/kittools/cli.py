@@ -107,6 +107,9 @@ def parser() -> argparse.ArgumentParser:
                                                               "(default: fprime-default)")
     f.add_argument("--report-only", action="store_true",
                    help="write the report from the models' last ablations (build/footprint/), building nothing")
+    f.add_argument("--knob", action="append", default=[], metavar="TEXT",
+                   help="only the knobs whose name contains TEXT (repeatable; the profile's build always), "
+                        "for example --knob optimization for the compiler's")
     f.set_defaults(func=footprint.run)
     z = sub.add_parser("sizing", help="a build's fixed tables (command dispatch, telemetry, TaskRunner, thread "
                                       "pool, queues) against what its dictionary and run need, and its ports")

@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: Apache-2.0
 import re
 
+import pytest
+
 from kittools.sizes import ablation
-from kittools.workspace import KIT_ROOT
+from kittools.workspace import KIT_ROOT, KitError
 
 
 def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_level():
@@ -11,17 +13,30 @@ def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_le
     default = {"CONFIG_FPRIME": "y", "CONFIG_FPRIME_ASSERT_FILE_NAME": "y", "CONFIG_FPRIME_OBJECT_NAMES": "y",
                "CONFIG_FPRIME_COM_BUFFER_MAX_SIZE": "512", "CONFIG_FPRIME_CMD_STRING_MAX_SIZE": "40"}
     found = ablation.knobs(kit, default, "rtos")
+    compilers = [k.name for k in ablation.COMPILER_KNOBS]
     assert [k.name for k in found] == [
         "profile", "asserts: none", "asserts: file_id", "asserts: file_name",
-        "com_buffer_max_size: 128 -> 512", "object_names: n -> y"]
-    assert [k.name for k in ablation.knobs(kit, default, "baremetal")[-2:]] == [
+        "com_buffer_max_size: 128 -> 512", "object_names: n -> y", *compilers]
+    assert [k.name for k in ablation.knobs(kit, default, "baremetal")[-2 - len(compilers):-len(compilers)]] == [
         "telemetry store: TlmChan -> TlmLinearChan", "command dispatcher: CommandDispatcher -> PassiveCmdDispatcher"]
     # A policy that selects a service's other form already (baremetal_passive's dispatcher) has no knob for it
     passive = {"CONFIG_KIT_MODEL_BAREMETAL": "y", "CONFIG_KIT_CMD_DISPATCHER_PASSIVE": "y"}
-    assert [k.name for k in ablation.knobs(kit, default, "baremetal", passive)[-1:]] == [
-        "telemetry store: TlmChan -> TlmLinearChan"]
+    assert [k.name for k in ablation.knobs(kit, default, "baremetal", passive)[-1 - len(compilers):]] == [
+        "telemetry store: TlmChan -> TlmLinearChan", *compilers]
     assert found[1].settings == ("CONFIG_FPRIME_ASSERT_NONE=y",)
-    assert found[-1].settings == ("CONFIG_FPRIME_OBJECT_NAMES=y",)
+    assert found[5].settings == ("CONFIG_FPRIME_OBJECT_NAMES=y",)
+    # A build already off the kit's choice (no LTO) has no knob to move it there
+    no_lto = {"CONFIG_LTO": "n", "CONFIG_ISR_TABLES_LOCAL_DECLARATION": "n"}
+    assert "link-time optimization: on -> off" not in [k.name for k in ablation.knobs(kit, default, "rtos", no_lto)]
+
+
+def test_the_compiler_knobs_move_what_the_kit_sets():
+    """Each compiler knob moves an option off the kit's own choice: LTO is on in
+    app/prj.conf, so its knob turns it off; the optimization knobs leave -Os."""
+    prj = (KIT_ROOT / "app" / "prj.conf").read_text()
+    assert "CONFIG_LTO=y" in prj and "CONFIG_ISR_TABLES_LOCAL_DECLARATION=y" in prj
+    lto = ablation.COMPILER_KNOBS[0]
+    assert all(s.endswith("=n") and s.replace("=n", "=y") in prj for s in lto.settings)
 
 
 def test_every_profile_sets_only_switches_of_modules_fprime():
@@ -42,8 +57,28 @@ def test_the_table_says_what_each_knob_cost_and_broke(tmp_path):
                          note="HEAP failures=3")
     broken = ablation.Row("com_buffer_max_size: 128 -> 512", [], built=False, note="build failed")
     found = ablation.table([base, names, broken], "qemu_cortex_m3", "rtos", "fprime-kit", "fprime-default")
-    assert found.rows[1] == ["object_names: n -> y", 1400, "+400", 900, "+400",
+    assert found.rows[1] == ["object_names: n -> y", 1400, "+400", 900, "+400", "", "",
                              "ROM F´ framework +400; RAM F´ framework +400", "FAIL: HEAP failures=3"]
     assert found.rows[2][-2:] == ["", "build failed: build failed"]
     ablation.write_report([found], tmp_path)
     assert "| object_names: n -> y | 1,400 | +400 |" in (tmp_path / "report.md").read_text()
+
+
+def test_a_nominal_run_gives_its_verdict_and_the_fastest_rate_groups_latency():
+    passed = ("KIT RG name=rg10Hz hz=10 latency_p50=900 latency_max=950\n"
+              "KIT RG name=rg1kHz hz=1000 latency_min=107 latency_p50=111 latency_p99=2047 latency_max=2819\n"
+              "KIT END variant=rtos result=PASS uptime_ms=2009\n")
+    assert ablation.nominal_outcome(passed) == (True, "", {"p50": 111, "max": 2819})
+    halted = "KIT HALT reason=stack_overflow code=2 context=main expected=no\nPROJECT EXECUTION FAILED\n"
+    assert ablation.nominal_outcome(halted) == (
+        False, "HALT reason=stack_overflow code=2 context=main expected=no", {})
+    assert ablation.nominal_outcome("") == (False, "no END PASS", {})
+
+
+def test_a_knob_filter_keeps_the_profile_and_the_knobs_it_names():
+    plan = [ablation.Knob("profile"), ablation.Knob("asserts: none"), *ablation.COMPILER_KNOBS]
+    assert ablation.chosen(plan, []) == plan
+    assert [k.name for k in ablation.chosen(plan, ["OPTIMIZATION"])] == [
+        "profile", "link-time optimization: on -> off", "optimization: -Os -> -O2", "optimization: -Os -> -Og"]
+    with pytest.raises(KitError, match="no knob matches 'nothing'; the knobs are: asserts: none; link-time"):
+        ablation.chosen(plan, ["nothing"])

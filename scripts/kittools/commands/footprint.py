@@ -21,7 +21,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.report_only:
         check_provisioned()
         for model in models:
-            ablation.run(args.board, model, profile, toward, ablation.out_dir_of(args.board, model, profile), say)
+            ablation.run(args.board, model, profile, toward, ablation.out_dir_of(args.board, model, profile), say,
+                         args.knob)
     tables = []
     for model in models:
         conditions, rows = ablation.load(ablation.out_dir_of(args.board, model, profile) / "footprint.json")

@@ -11,9 +11,11 @@ what a knob costs includes what it breaks.
 
 The knobs are the F´ switches of modules/fprime/Kconfig in which the two
 profiles differ, so the list follows the Kconfig and the profiles, not a
-list here; and the services' other forms the variant's model has
+list here; the services' other forms the variant's model has
 (SERVICE_KNOBS), but for those its build has already (a policy may select
-one).
+one); and the whole-build compiler and linker options (COMPILER_KNOBS),
+each moved off the kit's choice, with what it does to rg1kHz's dispatch
+latency beside ROM and RAM.
 """
 
 from __future__ import annotations
@@ -76,6 +78,18 @@ SERVICE_KNOBS = (
 )
 
 
+#: Whole-build compiler and linker options, each moved off the kit's choice
+#: (app/prj.conf: link-time optimization; Zephyr's default -Os)
+COMPILER_KNOBS = (
+    Knob("link-time optimization: on -> off", ("CONFIG_LTO=n", "CONFIG_ISR_TABLES_LOCAL_DECLARATION=n")),
+    Knob("optimization: -Os -> -O2", ("CONFIG_SPEED_OPTIMIZATIONS=y",)),
+    Knob("optimization: -Os -> -Og", ("CONFIG_DEBUG_OPTIMIZATIONS=y",)),
+)
+#: The rate group whose dispatch latency each row reports (the fastest: the
+#: first to feel a slower path)
+LATENCY_RG = "rg1kHz"
+
+
 @dataclass
 class Row:
     knob: str
@@ -88,6 +102,7 @@ class Row:
     ram_layers: dict[str, int] = field(default_factory=dict)
     note: str = ""
     seconds: float = 0.0
+    latency: dict[str, int] = field(default_factory=dict)  # LATENCY_RG's p50 and max, cycles
 
 
 def fprime_settings(dotconfig: Path) -> dict[str, str]:
@@ -115,7 +130,8 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[s
     def has(knob: Knob) -> bool:
         return built is not None and all(built.get(k) == v for k, v in (s.split("=", 1) for s in knob.settings))
 
-    return found + [k for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
+    services = [k for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
+    return found + services + [k for k in COMPILER_KNOBS if not has(k)]
 
 
 _OVERFLOW = re.compile(r"region `(?P<region>\w+)' overflowed by (?P<bytes>\d+) bytes")
@@ -151,6 +167,20 @@ def _slug(knob: str) -> str:
     return re.sub(r"-+", "-", "".join(c if c.isalnum() else "-" for c in knob)).strip("-")
 
 
+def nominal_outcome(text: str) -> tuple[bool, str, dict[str, int]]:
+    """A nominal run's console: whether it passed, why not (a halted run has
+    no END line: its HALT, FATAL or HEAP line says why), and LATENCY_RG's
+    dispatch latency (p50, max)."""
+    records = [r for r in map(console.parse_line, text.splitlines()) if r is not None]
+    passed = any(r.kind == "END" and r.fields.get("result") == "PASS" for r in records)
+    latency = {key: int(r.fields[f"latency_{key}"]) for r in records
+               if r.kind == "RG" and r.fields.get("name") == LATENCY_RG
+               for key in ("p50", "max") if f"latency_{key}" in r.fields}
+    note = "" if passed else "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
+                                       for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
+    return passed, note, latency
+
+
 def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) -> Row:
     started = time.monotonic()
     slug = _slug(knob.name)
@@ -168,21 +198,31 @@ def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) 
             row.passed = False
             row.note = str(error).splitlines()[0][:300]
         else:
-            # A halted run has no END line: its HALT or FATAL line says why
-            records = [r for r in map(console.parse_line, text.splitlines()) if r is not None]
-            row.passed = any(r.kind == "END" and r.fields.get("result") == "PASS" for r in records)
-            if not row.passed:
-                row.note = "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
-                                     for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
+            row.passed, row.note, row.latency = nominal_outcome(text)
     else:
         row.note = build_failure(out_dir / f"{slug}.build.log")
     row.seconds = time.monotonic() - started
     return row
 
 
+def chosen(plan: list[Knob], only: list[str]) -> list[Knob]:
+    """The profile's own build and the knobs whose name contains one of
+    `only` (all of them when it is empty); a filter that keeps no knob is an
+    error that lists them."""
+    if not only:
+        return plan
+    kept = [k for k in plan[1:] if any(text.lower() in k.name.lower() for text in only)]
+    if not kept:
+        raise KitError(f"no knob matches {', '.join(repr(o) for o in only)}; the knobs are: "
+                       f"{'; '.join(k.name for k in plan[1:])}")
+    return [plan[0], *kept]
+
+
 def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
-        say: Callable[[str], None]) -> list[Row]:
-    """The ablation of one board and variant from `profile`, each knob moved toward `toward`."""
+        say: Callable[[str], None], only: list[str] | None = None) -> list[Row]:
+    """The ablation of one board and variant from `profile`, each knob moved
+    toward `toward` (only those `only` names, when given: then the other
+    profile's whole build is left out too)."""
     out_dir.mkdir(parents=True, exist_ok=True)
     say(f"footprint: {board} {variant}: building the profiles {profile} and {toward}")
     base = _measure(Knob("profile"), board, variant, profile, out_dir)
@@ -196,6 +236,7 @@ def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
     built = kconfig(out_dir / "profile" / "zephyr" / ".config")
     plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
                  fprime_settings(other_dir / "zephyr" / ".config"), variants.get(variant).model, built)
+    plan = chosen(plan, only or [])
     rows = [base]
     for index, knob in enumerate(plan[1:], start=1):
         row = _measure(knob, board, variant, profile, out_dir)
@@ -203,9 +244,9 @@ def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
         verdict = "build FAILED" if not row.built else ("nominal PASS" if row.passed else "nominal FAIL")
         say(f"footprint: {index}/{len(plan)} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
             f"({row.seconds:.0f} s)")
-    # Last, the other profile whole: every knob moved at once
-    rows.append(_measure(Knob(f"profile {toward}"), board, variant, toward, out_dir))
-    say(f"footprint: profile {toward}: {'built' if rows[-1].built else 'build FAILED'} {rows[-1].note}")
+    if not only:  # last, the other profile whole: every knob moved at once
+        rows.append(_measure(Knob(f"profile {toward}"), board, variant, toward, out_dir))
+        say(f"footprint: profile {toward}: {'built' if rows[-1].built else 'build FAILED'} {rows[-1].note}")
     # "model": the variant, as `kit footprint --model` names it
     (out_dir / "footprint.json").write_text(json.dumps(
         {"board": board, "model": variant, "profile": profile, "toward": toward,
@@ -233,10 +274,14 @@ def table(rows: list[Row], board: str, model: str, profile: str, toward: str) ->
             moved += [f"{kind} {k} {d:+,d}" for d, k in changes[:2] if d]
         verdict = f"build failed: {row.note}" if not row.built else ("PASS" if row.passed else f"FAIL: {row.note}")
         deltas = ("", "") if row is base else (_delta(row.rom, base.rom), _delta(row.ram, base.ram))
+        latency = row.latency
         body.append([row.knob, row.rom if row.rom is not None else "", deltas[0],
-                     row.ram if row.ram is not None else "", deltas[1], "; ".join(moved), verdict])
-    return Table(f"F´ knobs on {board}, {model}: from {profile}, one knob at a time toward {toward} (bytes)",
-                 ["knob", "ROM", "ΔROM", "RAM", "ΔRAM", "layers moved most (ROM / RAM)", "nominal run"], body)
+                     row.ram if row.ram is not None else "", deltas[1],
+                     latency.get("p50", ""), latency.get("max", ""), "; ".join(moved), verdict])
+    return Table(f"Knobs on {board}, {model}: from {profile}, one knob at a time toward {toward} (bytes; "
+                 f"{LATENCY_RG}'s dispatch latency in cycles, nominal run)",
+                 ["knob", "ROM", "ΔROM", "RAM", "ΔRAM", f"{LATENCY_RG} latency p50", f"{LATENCY_RG} latency max",
+                  "layers moved most (ROM / RAM)", "nominal run"], body)
 
 
 def write_report(tables: list[Table], out_dir: Path) -> list[Path]:
@@ -260,7 +305,7 @@ def load(path: Path) -> tuple[dict[str, str], list[Row]]:
     if not path.is_file():
         raise KitError(f"no ablation at {path}: run scripts/kit footprint first")
     data = json.loads(path.read_text())
-    rows = [Row(**row) for row in data["rows"]]
+    rows = [Row(**row) for row in data["rows"]]  # an older file's rows have no latency: left empty
     for row in rows:
         if not row.built:  # the reason, as this version reads it from the build's log
             row.note = build_failure(path.parent / f"{_slug(row.knob)}.build.log")
