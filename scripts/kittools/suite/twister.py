@@ -14,6 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from kittools.build.folder import CONSOLE_LOG, BuildFolder
 from kittools.sizes import memory
 from kittools.suite import floor, results
 from kittools.suite.counts import Tally, twister_tally
@@ -129,7 +130,7 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     the configurations (kit test --subset); two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
-    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{floor.CONSOLE_LOG}"):  # the kernel floor's records
+    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{CONSOLE_LOG}"):  # the kernel floor's records
         console_log.unlink()
     command = ["west", "twister", "-T", "tests", "-j", "2", "--overflow-as-errors"]
     for platform in platforms:
@@ -192,7 +193,7 @@ def play(command: list[str], log: Path, out_dir: Path) -> Tally:
         # the file (OVERLAY_CONFIG) and twister no longer passes it.
         for overlay in out_dir.glob("*/**/twister/testsuite_extra.conf"):
             overlay.unlink()
-            (overlay.parent.parent / "CMakeCache.txt").unlink(missing_ok=True)
+            BuildFolder(overlay.parent.parent).cmake_cache.unlink(missing_ok=True)
     # The last run's consoles go first: a scenario this run does not play (or
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
