@@ -81,7 +81,7 @@ def judge(data: Results, board: str, log_dir: Path, limits: budget.Budget, updat
     # The report is for the reader; the verdict above does not depend on it
     from kittools.report import writer
 
-    writer.write(data, out_dir / "report", baseline, limits)
+    writer.write(data, out_dir / "report", baseline, limits, verdict=verdict)
     print(f"[kit]   {board}: report against {baseline_path.name}: {out_dir / 'report' / 'report.html'}", flush=True)
     return tally
 
