@@ -14,7 +14,7 @@ from typing import Any
 from kittools import console, metrics, model
 from kittools.build import conditions
 from kittools.build.folder import BuildFolder
-from kittools.link import serial_sweep
+from kittools.link import serial_points
 from kittools.sizes import by_layer, sizing, symbols
 from kittools.sizes.memory import Footprint, measure
 from kittools.suite import floor
@@ -223,7 +223,7 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
             for file_name in LINK_RECORD_FILES:
                 records_file = integration_logs(log_dir, platform, build.name) / file_name
                 if records_file.is_file():
-                    link_records += serial_sweep.records_of(records_file)
+                    link_records += serial_points.records_of(records_file)
         found.append(Played(
             platform, run.variant, measure(build), run.records, link_records,
             by_layer.breakdown(rom), by_layer.breakdown(ram), conditions.read(build),
