@@ -5,6 +5,7 @@ consoles, matched to each model's dispatch path, and held by the budget."""
 import copy
 
 from kittools import console, metrics, model
+from kittools.build.folder import BuildFolder
 from kittools.sizes.memory import Footprint
 from kittools.suite import budget, floor
 
@@ -20,7 +21,7 @@ KIT END app=floor result={result}
 def _floor_build(tmp_path, name, text):
     build = tmp_path / name
     build.mkdir()
-    (build / floor.CONSOLE_LOG).write_text(text)
+    BuildFolder(build).console_log.write_text(text)
     return build
 
 
@@ -80,5 +81,5 @@ def test_zephyr_latency_measure_figures_are_read_when_it_finished(tmp_path):
     assert [(r.fields["metric"], r.int("cycles")) for r in found] == [
         ("isr.resume.different.thread.kernel", 412), ("sem.give.immediate.kernel", 95)]
     assert found[0].fields["description"] == "Return from ISR to another thread"
-    (build / floor.CONSOLE_LOG).write_text(text.replace("PROJECT EXECUTION SUCCESSFUL\n", ""))
+    BuildFolder(build).console_log.write_text(text.replace("PROJECT EXECUTION SUCCESSFUL\n", ""))
     assert floor.zephyr_records([build]) == []

@@ -6,9 +6,10 @@ from __future__ import annotations
 
 import pytest
 
-from kittools.link import client, flood, serial_sweep
+from kittools.link import client, flood, serial_points
 from kittools.link.client import START_WORD_BYTES, bytes_per_second, line_rate
-from kittools.link.serial_sweep import LinkCounts, Offer, PointTraffic, traffic_time
+from kittools.link.health import LinkCounts
+from kittools.link.serial_points import Offer, PointTraffic, traffic_time
 from kittools.workspace import KitError
 
 NOOP = bytes(18)
@@ -43,8 +44,8 @@ def test_a_point_offers_the_same_traffic_whatever_the_host_timing():
     fine = [i * 0.003 for i in range(1000)]
     a_traffic, a_bytes = play(Offer(NOOP, 40, 5000, seed=7), coarse)
     b_traffic, b_bytes = play(Offer(NOOP, 40, 5000, seed=7), fine)
-    assert a_traffic.commands_sent == b_traffic.commands_sent == int(40 * serial_sweep.POINT_S)
-    assert len(a_bytes) == len(b_bytes) == a_traffic.commands_sent * len(NOOP) + int(5000 * serial_sweep.POINT_S)
+    assert a_traffic.commands_sent == b_traffic.commands_sent == int(40 * serial_points.POINT_S)
+    assert len(a_bytes) == len(b_bytes) == a_traffic.commands_sent * len(NOOP) + int(5000 * serial_points.POINT_S)
 
 
 def test_an_offer_is_complete_only_when_all_its_traffic_went():
@@ -53,22 +54,22 @@ def test_an_offer_is_complete_only_when_all_its_traffic_went():
     offer.due(0.5, traffic)
     assert not offer.complete(traffic)
     for step in range(1, 200):  # the offer writes WRITE_MAX bytes at most a call
-        offer.due(serial_sweep.POINT_S + step, traffic)
+        offer.due(serial_points.POINT_S + step, traffic)
     assert offer.complete(traffic)
 
 
 def test_the_quiet_before_a_request_is_skipped_not_made_up():
-    quiet_from = serial_sweep.SETTLE_S - serial_sweep.REQUEST_QUIET_S
+    quiet_from = serial_points.SETTLE_S - serial_points.REQUEST_QUIET_S
     assert traffic_time(quiet_from / 2) == quiet_from / 2
-    assert traffic_time(quiet_from + serial_sweep.REQUEST_QUIET_S / 2) == pytest.approx(quiet_from)
-    assert traffic_time(serial_sweep.SETTLE_S + 1) == pytest.approx(quiet_from + 1)
+    assert traffic_time(quiet_from + serial_points.REQUEST_QUIET_S / 2) == pytest.approx(quiet_from)
+    assert traffic_time(serial_points.SETTLE_S + 1) == pytest.approx(quiet_from + 1)
 
 
 def test_at_full_noise_the_noops_and_the_noise_fill_the_line():
-    per_s = serial_sweep.noise_per_second(115200, NOOP, 100) + serial_sweep.NOISE_NOOP_RATE * len(NOOP)
+    per_s = serial_points.noise_per_second(115200, NOOP, 100) + serial_points.NOISE_NOOP_RATE * len(NOOP)
     assert per_s == pytest.approx(11520)
-    assert serial_sweep.noise_per_second(115200, NOOP, 0) == 0
-    assert serial_sweep.full_line_commands(115200, NOOP) == 640
+    assert serial_points.noise_per_second(115200, NOOP, 0) == 0
+    assert serial_points.full_line_commands(115200, NOOP) == 640
 
 
 def test_link_counts_are_deltas_and_positions_count_each_decision():

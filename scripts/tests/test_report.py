@@ -91,6 +91,43 @@ def test_budget_fails_on_a_worsened_run(tmp_path):
     assert any("slips" in v for v in outcome.violations)
 
 
+def _counting_checks(monkeypatch) -> list[int]:
+    """budget.check, counting its calls."""
+    calls: list[int] = []
+    check = budget.check
+
+    def counted(*args, **kwargs):
+        calls.append(1)
+        return check(*args, **kwargs)
+
+    monkeypatch.setattr(budget, "check", counted)
+    return calls
+
+
+def test_kit_test_computes_the_budget_verdict_once(tmp_path, monkeypatch):
+    from kittools.suite import verdict
+
+    baseline = _results()
+    worse = copy.deepcopy(baseline)
+    worse.variants["rtos"].metrics[model.ROM] *= 1.05
+    monkeypatch.setattr(verdict, "BASELINES", tmp_path / "baselines")
+    verdict.write_baseline(baseline, tmp_path / "baselines" / "qemu_cortex_m3.json")
+    calls = _counting_checks(monkeypatch)
+    tally = verdict.judge(worse, "qemu_cortex_m3", tmp_path / "logs", budget.Budget())
+    assert len(calls) == 1  # the gate's verdict is the report's
+    assert (tally.passed, tally.failed) == (1, 1)  # the budget fails, the tables fit
+    report = (tmp_path / "logs" / "qemu_cortex_m3" / "report" / "report.md").read_text()
+    assert "Budget check: FAIL" in report and "over budget" in report
+
+
+def test_kit_report_on_its_own_computes_the_verdict(tmp_path, monkeypatch):
+    baseline = _results()
+    calls = _counting_checks(monkeypatch)
+    outcome = writer.write(copy.deepcopy(baseline), tmp_path, baseline=baseline)
+    assert len(calls) == 1 and outcome.violations == []
+    assert "Budget check: PASS" in (tmp_path / "report.md").read_text()
+
+
 def test_small_p99_changes_are_not_regressions(tmp_path):
     baseline = _results()
     noisy = copy.deepcopy(baseline)

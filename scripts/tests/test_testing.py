@@ -184,17 +184,17 @@ def test_twister_progress_says_one_line_per_finished_configuration():
     progress = twister.TwisterProgress()
     said = [s for s in (progress.line(line) for line in TWISTER_OUTPUT) if s is not None]
     assert said[:3] == [
-        "[kit]   twister: 24 configurations to build and run, 2 at a time",
-        "[kit]   3/24 qemu_cortex_m3/ti_lm3s6965 kit.deployment.rtos PASSED 2.3 s (21 left)",
-        "[kit]   24/24 mps2/an385 kit.faults.baremetal FAILED Timeout 60.0 s (0 left)",
-    ]
-    assert said[3] == "[kit]   12/24 mps2/an385 kit.load.rtos NOT RUN build (12 left)"
+        "  twister: 24 configurations to build and run, 2 at a time",
+        "  3/24 qemu_cortex_m3/ti_lm3s6965 kit.deployment.rtos PASSED 2.3 s (21 left)",
+        "  24/24 mps2/an385 kit.faults.baremetal FAILED Timeout 60.0 s (0 left)",
+    ]  # the logger adds "[kit] " (kittools.log)
+    assert said[3] == "  12/24 mps2/an385 kit.load.rtos NOT RUN build (12 left)"
 
 
 def test_twister_progress_without_the_announcement_uses_the_line_total():
     progress = twister.TwisterProgress()
     assert progress.line("INFO    - 1/2 qemu_cortex_m3 kit.soak.rtos PASSED (qemu 610.2s)") == \
-        "[kit]   1/2 qemu_cortex_m3 kit.soak.rtos PASSED 610.2 s (1 left)"
+        "  1/2 qemu_cortex_m3 kit.soak.rtos PASSED 610.2 s (1 left)"
     assert progress.line("INFO    - Total complete:    1/   2  50%  built (not run):    0, filtered:    0\r") is None
 
 
@@ -202,15 +202,15 @@ def test_streamed_output_is_logged_whole_and_said_line_by_line(tmp_path, monkeyp
     monkeypatch.setattr(twister, "environment", lambda: dict(os.environ))
     heard: list[str] = []
 
-    def say(line: str) -> str | None:
+    def progress(line: str) -> str | None:
         heard.append(line)
         return f"said {line}" if line.startswith("b") else None
 
-    code = twister._run_streamed(["sh", "-c", "printf 'a\\nb1\\rb2\\n'; exit 3"], tmp_path / "t.log", say)
+    code = twister._run_streamed(["sh", "-c", "printf 'a\\nb1\\rb2\\n'; exit 3"], tmp_path / "t.log", progress)
     assert code == 3
     assert (tmp_path / "t.log").read_bytes() == b"a\nb1\rb2\n"
     assert heard == ["a", "b1", "b2"]
-    assert capsys.readouterr().out == "said b1\nsaid b2\n"
+    assert capsys.readouterr().out == "[kit] said b1\n[kit] said b2\n"  # said through the kit's logger
 
 
 def _fake_twister(monkeypatch, commands, status="passed", code=0):

@@ -9,7 +9,7 @@ import re
 from collections.abc import Callable
 from pathlib import Path
 
-from kittools import workspace
+from kittools import log, workspace
 from kittools.boards.devicetree import link_uarts, spare_uart
 from kittools.boards.memory import check_fit, smallest_models
 from kittools.boards.suites import allow_module, join_suite
@@ -182,7 +182,7 @@ def _copy_folder(reference_dir: Path, folder: Path, identifier: str, root: Path,
 
 
 def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False,
-              say: Callable[[str], None] = print, root: Path | None = None, zephyr: Path | None = None) -> Path:
+              say: Callable[[str], None] = log.say, root: Path | None = None, zephyr: Path | None = None) -> Path:
     """Check the board, scaffold boards/<dir>/ from the reference's folder and
     add the board to the twister files; returns the new folder."""
     root = workspace.KIT_ROOT if root is None else root

@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import os
-import re
 import selectors
 import signal
 import subprocess
@@ -12,7 +11,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from kittools.sizes.memory import kconfig
+from kittools.build.folder import BuildFolder
 from kittools.workspace import KIT_ROOT, KitError, environment
 
 RUN_TIMEOUT_S = 180.0
@@ -28,26 +27,10 @@ def run_command(build_dir: Path) -> list[str]:
     return ["cmake", "--build", str(build_dir), "--target", "run"]
 
 
-def cache_value(build_dir: Path, name: str) -> str | None:
-    """A variable of a build's CMake cache, or None when it is not set."""
-    cache = build_dir / "CMakeCache.txt"
-    if not cache.is_file():
-        raise KitError(f"{build_dir} is not a configured build (no CMakeCache.txt)")
-    match = re.search(rf"^{name}:[A-Z]+=(.+)$", cache.read_text(), re.MULTILINE)
-    return match.group(1) if match else None
-
-
-def build_kconfig(build_dir: Path) -> dict[str, str]:
-    """A build's Kconfig values (footprint.kconfig of its .config), or {}
-    for a folder that was never configured."""
-    config = build_dir / "zephyr" / ".config"
-    return kconfig(config) if config.is_file() else {}
-
-
 def asks_at_boot(build_dir: Path) -> bool:
     """The build asks for its scenario on the console at boot
     (CONFIG_KIT_SCENARIO_AT_BOOT: every build of the suite)."""
-    return build_kconfig(build_dir).get("CONFIG_KIT_SCENARIO_AT_BOOT") == "y"
+    return BuildFolder(build_dir).kconfig(missing_ok=True).get("CONFIG_KIT_SCENARIO_AT_BOOT") == "y"
 
 
 #: The line a build that asks at boot prints before it reads the name
@@ -58,7 +41,7 @@ def qemu_pipe(build_dir: Path) -> Path | None:
     """The FIFO a twister build sends its console to (QEMU_PIPE in its CMake
     cache: QEMU reads <pipe>.in and writes <pipe>.out), or None: a plain
     build's console is on stdio."""
-    pipe = cache_value(build_dir, "QEMU_PIPE")
+    pipe = BuildFolder(build_dir).cache_value("QEMU_PIPE")
     return Path(pipe) if pipe else None
 
 

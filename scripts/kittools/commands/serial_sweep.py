@@ -9,6 +9,7 @@ import json
 from kittools import sweep
 from kittools.commands.gds import ground_build
 from kittools.link import serial_sweep
+from kittools.link.serial_points import PointTraffic
 from kittools.log import say
 from kittools.suite import results
 
@@ -20,7 +21,7 @@ def run(args: argparse.Namespace) -> int:
     out = logs / results.SERIAL_SWEEP_FILE
     out.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
     found = outcome.sweep()
-    levels: dict[tuple[str, int], list[serial_sweep.PointTraffic]] = {}
+    levels: dict[tuple[str, int], list[PointTraffic]] = {}
     for traffic in outcome.traffic:
         levels.setdefault((traffic.axis, traffic.level), []).append(traffic)
     for (axis, level), plays in levels.items():

@@ -31,17 +31,8 @@ from kittools.build import runner
 from kittools.link import ground
 from kittools.link.client import Downlink, Pacer, bytes_per_second, command, frame, line_rate, noise
 from kittools.link.fuzz import NOOP_EVENT, answered
-from kittools.link.serial_sweep import (
-    HEARTBEAT_CHANNEL,
-    NOISE,
-    REPLY_TIMEOUT_S,
-    REQUEST_QUIET_S,
-    SEGMENT_ARGUMENTS,
-    SETTLE_S,
-    WRITE_MAX,
-    LinkCounts,
-    settled_counts,
-)
+from kittools.link.health import HEARTBEAT_CHANNEL, REPLY_TIMEOUT_S, LinkCounts, settled_counts
+from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S, WRITE_MAX
 from kittools.workspace import KitError
 
 #: The deployment's seconds of noise at the full line rate

@@ -24,7 +24,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from kittools import variants
-from kittools.build.runner import Qemu, asks_at_boot, build_kconfig, cache_value, ends_run
+from kittools.build.folder import BuildFolder
+from kittools.build.runner import Qemu, asks_at_boot, ends_run
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 BOOT_TIMEOUT_S = 60.0
@@ -52,25 +53,18 @@ def dictionary_id(dictionary: Path) -> str:
     return hashlib.sha256(dictionary.read_bytes()).hexdigest()[:16]
 
 
-def dictionary_of(build_dir: Path) -> Path:
-    """The F´ dictionary a kit build made."""
-    dictionaries = sorted(build_dir.glob("build-artifacts/**/dict/*TopologyDictionary.json"))
-    if not dictionaries:
-        raise KitError(f"{build_dir} has no F´ dictionary: build it first (west build -d {build_dir})")
-    return dictionaries[0]
-
-
 def link_of(build_dir: Path, dictionary: Path | None = None) -> Link:
     """The link socket and the dictionary of a built kit build; `dictionary`
     replaces the build's own (`boot` checks that it is the firmware's)."""
-    socket_path = cache_value(build_dir, "KIT_LINK_SOCKET")
+    folder = BuildFolder(build_dir)
+    socket_path = folder.cache_value("KIT_LINK_SOCKET")
     if not socket_path:
         raise KitError(f"{build_dir} has no ground link (no KIT_LINK_SOCKET): is it a kit build of this version?")
     if dictionary is None:
-        dictionary = dictionary_of(build_dir)
+        dictionary = folder.dictionary()
     elif not dictionary.is_file():
         raise KitError(f"no dictionary at {dictionary}")
-    return Link(build_dir, Path(socket_path), dictionary, cache_value(build_dir, "KIT_BOARD_TARGET") or "")
+    return Link(build_dir, Path(socket_path), dictionary, folder.cache_value("KIT_BOARD_TARGET") or "")
 
 
 def boot(link: Link) -> Qemu:
@@ -108,7 +102,7 @@ def link_line(qemu: Qemu) -> str:
 
 def scenario_of(build_dir: Path) -> str | None:
     """The scenario a build plays when the console does not choose one."""
-    return build_kconfig(build_dir).get("CONFIG_KIT_SCENARIO")
+    return BuildFolder(build_dir).kconfig(missing_ok=True).get("CONFIG_KIT_SCENARIO")
 
 
 def socket_free(path: Path) -> bool:

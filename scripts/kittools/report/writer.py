@@ -37,7 +37,11 @@ def sweep_sections(data: Results) -> list[Section]:
     return sections + link_report.sections(data)
 
 
-def build_sections(data: Results, baseline: Results | None, limits: Budget) -> tuple[list[Section], list[str]]:
+def build_sections(data: Results, baseline: Results | None, limits: Budget,
+                   verdict: budget.Verdict | None = None) -> tuple[list[Section], list[str]]:
+    """A board's sections and its budget violations. The budget verdict is
+    `verdict` when the caller has it already (kit test judged the board
+    before it asks for the report), else checked here against `baseline`."""
     names = data.names()
     sections: list[Section] = [analysis.conditions_text(data), analysis.findings(data),
                                analysis.choosing(data, analysis.sweeps(data)), tables.metrics_table(data)]
@@ -46,8 +50,9 @@ def build_sections(data: Results, baseline: Results | None, limits: Budget) -> t
         sections.append(tasks)
     sections += sweep_sections(data)
     violations: list[str] = []
-    if baseline is not None:
+    if verdict is None and baseline is not None:
         verdict = budget.check(data, baseline, limits)
+    if verdict is not None:
         violations = verdict.violations
         sections += tables.budget_sections(verdict, limits)
     mods = tables.modules_table(data)
@@ -64,15 +69,18 @@ def build_sections(data: Results, baseline: Results | None, limits: Budget) -> t
 
 
 def write(data: Results, out_dir: Path, baseline: Results | None = None, limits: Budget | None = None,
-          say: Callable[[str], None] = lambda _m: None) -> Outcome:
-    """The report of one board's results."""
-    return write_boards([data], out_dir, baseline, limits, say)
+          say: Callable[[str], None] = lambda _m: None, verdict: budget.Verdict | None = None) -> Outcome:
+    """The report of one board's results; `verdict`: its budget verdict
+    against `baseline`, when the caller has computed it (not computed again)."""
+    return write_boards([data], out_dir, baseline, limits, say, verdict)
 
 
 def write_boards(datas: list[Results], out_dir: Path, baseline: Results | None = None,
-                 limits: Budget | None = None, say: Callable[[str], None] = lambda _m: None) -> Outcome:
+                 limits: Budget | None = None, say: Callable[[str], None] = lambda _m: None,
+                 verdict: budget.Verdict | None = None) -> Outcome:
     """The report of one or more boards' results; the baseline (budget check)
-    applies to the first."""
+    applies to the first, and so does `verdict` (the budget check's, already
+    computed by the caller: kit test's)."""
     limits = limits or Budget()
     out_dir.mkdir(parents=True, exist_ok=True)
     say("report: building tables and plots")
@@ -80,7 +88,9 @@ def write_boards(datas: list[Results], out_dir: Path, baseline: Results | None =
     sections: list[Section] = [tables.boards_table(datas), plots.boards_chart(datas)] if several else []
     violations: list[str] = []
     for index, data in enumerate(datas):
-        board_sections, board_violations = build_sections(data, baseline if index == 0 else None, limits)
+        first = index == 0
+        board_sections, board_violations = build_sections(data, baseline if first else None, limits,
+                                                          verdict if first else None)
         if several:
             for section in board_sections:
                 section.title = f"{data.board}: {section.title}"

@@ -31,17 +31,17 @@ from typing import Any
 
 from kittools import console, variants
 from kittools.build import runner
+from kittools.build.folder import FPRIME_SWITCH, BuildFolder
 from kittools.report import render
 from kittools.report.document import CAVEAT, Section, Table, Text
 from kittools.sizes import by_layer
-from kittools.sizes.memory import kconfig, measure
+from kittools.sizes.memory import measure
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 SNIPPETS = KIT_ROOT / "modules" / "fprime" / "snippets"
 #: The assert level is a choice: each alternative is a knob of its own
 ASSERT_LEVELS = ("CONFIG_FPRIME_ASSERT_NONE", "CONFIG_FPRIME_ASSERT_FILE_ID", "CONFIG_FPRIME_ASSERT_FILE_NAME",
                  "CONFIG_FPRIME_ASSERT_RELATIVE_PATH")
-_PREFIX = "CONFIG_FPRIME_"
 
 
 def profiles() -> list[str]:
@@ -105,11 +105,6 @@ class Row:
     latency: dict[str, int] = field(default_factory=dict)  # LATENCY_RG's p50 and max, cycles
 
 
-def fprime_settings(dotconfig: Path) -> dict[str, str]:
-    """The F´ switches of a build (modules/fprime/Kconfig), as its .config has them."""
-    return {k: v for k, v in kconfig(dotconfig).items() if k.startswith(_PREFIX)}
-
-
 def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[str, str] | None = None) -> list[Knob]:
     """One knob per F´ switch in which two profiles' builds differ (moved to
     the other's value), one per other assert level, and the execution
@@ -125,7 +120,7 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[s
             continue
         before, after = base.get(key, "n"), other.get(key, "n")
         if before != after:
-            name = key.removeprefix(_PREFIX).lower()
+            name = key.removeprefix(FPRIME_SWITCH).lower()
             found.append(Knob(f"{name}: {before} -> {after}", (f"{key}={after}",)))
     def has(knob: Knob) -> bool:
         return built is not None and all(built.get(k) == v for k, v in (s.split("=", 1) for s in knob.settings))
@@ -233,9 +228,9 @@ def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
     if not _build(board, variant, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True):
         raise KitError(f"the profile {toward} does not configure for {board} {variant}: "
                        f"{out_dir / 'toward.configure.log'}")
-    built = kconfig(out_dir / "profile" / "zephyr" / ".config")
-    plan = knobs(fprime_settings(out_dir / "profile" / "zephyr" / ".config"),
-                 fprime_settings(other_dir / "zephyr" / ".config"), variants.get(variant).model, built)
+    profile_build = BuildFolder(out_dir / "profile")
+    plan = knobs(profile_build.fprime_switches(), BuildFolder(other_dir).fprime_switches(),
+                 variants.get(variant).model, profile_build.kconfig())
     plan = chosen(plan, only or [])
     rows = [base]
     for index, knob in enumerate(plan[1:], start=1):

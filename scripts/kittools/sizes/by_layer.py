@@ -18,6 +18,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+from kittools.build.folder import BuildFolder
 from kittools.sizes import size_report
 from kittools.workspace import KitError, environment
 
@@ -158,9 +159,7 @@ def report(build_dir: Path, kind: str, niceness: int = 0) -> dict:
         raise ValueError(kind)
     path = size_report.output(build_dir, kind)
     made_from = build_dir / "size-reports.elf-sha256"
-    elf = build_dir / "zephyr" / "zephyr.elf"
-    if not elf.is_file():
-        raise KitError(f"{elf} is missing: build first")
+    elf = BuildFolder(build_dir).built_elf()
     image = hashlib.sha256(elf.read_bytes()).hexdigest()
     if not path.is_file() or not made_from.is_file() or made_from.read_text().strip() != image:
         _make_reports(build_dir, elf, niceness)

@@ -18,6 +18,7 @@ from typing import Any
 
 from elftools.elf.elffile import ELFFile
 
+from kittools.build.folder import BuildFolder
 from kittools.workspace import KitError
 
 #: The compilation unit that declares every instance of the topology (F´'s autocoder)
@@ -66,9 +67,7 @@ class ArrayMember:
 
 class DebugInfo:
     def __init__(self, build_dir: Path) -> None:
-        elf_path = build_dir / "zephyr" / "zephyr.elf"
-        if not elf_path.is_file():
-            raise KitError(f"{elf_path} is missing: build first")
+        elf_path = BuildFolder(build_dir).built_elf()
         self._stream = elf_path.open("rb")
         elf = ELFFile(self._stream)
         if not elf.has_dwarf_info():

@@ -16,6 +16,8 @@ from pathlib import Path
 from elftools.elf.constants import SH_FLAGS
 from elftools.elf.elffile import ELFFile
 
+from kittools.build.folder import BuildFolder
+
 
 @dataclass(frozen=True)
 class Footprint:
@@ -25,24 +27,13 @@ class Footprint:
     ram_size: int
 
 
-def kconfig(dotconfig: Path) -> dict[str, str]:
-    """A build's .config as symbol -> value (quotes stripped)."""
-    values: dict[str, str] = {}
-    for line in dotconfig.read_text().splitlines():
-        if line.startswith("CONFIG_") and "=" in line:
-            key, value = line.split("=", 1)
-            values[key] = value.strip('"')
-    return values
-
-
 def measure(build_dir: Path) -> Footprint:
     """Footprint of the Zephyr build in `build_dir`."""
-    elf_path = build_dir / "zephyr" / "zephyr.elf"
-    config_path = build_dir / "zephyr" / ".config"
-    for path in (elf_path, config_path):
+    folder = BuildFolder(build_dir)
+    for path in (folder.elf, folder.config):
         if not path.is_file():
             raise FileNotFoundError(f"{path} is missing: is {build_dir} a finished Zephyr build?")
-    config = kconfig(config_path)
+    config = folder.kconfig()
     flash = (int(config["CONFIG_FLASH_BASE_ADDRESS"], 0), int(config["CONFIG_FLASH_SIZE"]) * 1024)
     sram = (int(config["CONFIG_SRAM_BASE_ADDRESS"], 0), int(config["CONFIG_SRAM_SIZE"]) * 1024)
 
@@ -50,7 +41,7 @@ def measure(build_dir: Path) -> Footprint:
         return region[0] <= address < region[0] + region[1]
 
     rom_end, ram_end = flash[0], sram[0]
-    with elf_path.open("rb") as stream:
+    with folder.elf.open("rb") as stream:
         elf = ELFFile(stream)
         # Load addresses come from the program headers: a section's LMA is its
         # VMA shifted by the offset of the segment that holds it.

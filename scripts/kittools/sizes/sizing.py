@@ -18,10 +18,9 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from kittools.link import ground
+from kittools.build.folder import BuildFolder
 from kittools.sizes import ports
 from kittools.sizes.debuginfo import DebugInfo
-from kittools.sizes.memory import kconfig
 from kittools.workspace import KitError
 
 
@@ -198,8 +197,9 @@ def queue_advice(records: list[dict[str, str]]) -> list[Advice]:
 
 def measure(build_dir: Path, queue_records: list[dict[str, str]] | None = None) -> Sizing:
     """The sizing of a build; with the QUEUE records of its run, its queues too."""
-    dictionary = json.loads(ground.dictionary_of(build_dir).read_text())
-    config = kconfig(build_dir / "zephyr" / ".config")
+    folder = BuildFolder(build_dir)
+    dictionary = json.loads(folder.dictionary().read_text())
+    config = folder.kconfig()
     with DebugInfo(build_dir) as info:
         cost = ports.measure(info)
         active = sum(1 for i in info.instances() if info.derives_from(i.cls, "ActiveComponentBase"))

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from kittools import console
 from kittools.build import runner
+from kittools.log import say
 from kittools.suite import results
 from kittools.suite.counts import Tally
 from kittools.suite.platforms import TWISTER_OUT
@@ -58,7 +59,7 @@ def check_determinism(log_dir: Path, jobs: int = 2, required: bool = True) -> Ta
         for platform, build, scenario, expected in runs:
             again = futures[(platform, build)].result()[scenario]
             same = again == expected
-            print(f"[kit]   {platform} {build.name} {scenario}: sample hash {expected}, then {again}: "
-                  f"{'identical' if same else 'DIFFERENT'}", flush=True)
+            say(f"  {platform} {build.name} {scenario}: sample hash {expected}, then {again}: "
+                f"{'identical' if same else 'DIFFERENT'}")
             tally.add(Tally(passed=1) if same else Tally(failed=1))
     return tally

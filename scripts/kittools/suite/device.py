@@ -37,7 +37,8 @@ from typing import Any
 
 import yaml
 
-from kittools.build.runner import Qemu, build_kconfig
+from kittools.build.folder import ELF, BuildFolder
+from kittools.build.runner import Qemu
 from kittools.workspace import KIT_ROOT, KitError
 
 #: The runner modules/qemu adds to the QEMU boards (Zephyr's own)
@@ -55,10 +56,10 @@ def flash(build_dir: Path, device_dir: Path) -> Path:
     """Record a QEMU board's build as the image of a device folder (made if
     missing); returns its ELF. Refuses a build that is not one."""
     build_dir = build_dir.resolve()
-    elf = build_dir / "zephyr" / "zephyr.elf"
-    if not elf.is_file():
-        raise KitError(f"{build_dir} has no zephyr/zephyr.elf: nothing to flash (build it first)")
-    config = build_kconfig(build_dir)
+    folder = BuildFolder(build_dir)
+    if not folder.elf.is_file():
+        raise KitError(f"{build_dir} has no {ELF}: nothing to flash (build it first)")
+    config = folder.kconfig(missing_ok=True)
     if config.get("CONFIG_QEMU_TARGET") != "y":
         board = config.get("CONFIG_BOARD_TARGET", "?").strip('"')
         raise KitError(f"{build_dir} is a build for {board}, not a QEMU board: flash a real board with its own "
@@ -67,7 +68,7 @@ def flash(build_dir: Path, device_dir: Path) -> Path:
     staged = device_dir / (FLASHED + ".tmp")
     staged.write_text(f"{build_dir}\n")
     staged.replace(device_dir / FLASHED)  # the console sees a whole image or none
-    return elf
+    return folder.elf
 
 
 def take_flashed(device_dir: Path) -> Path | None:

@@ -21,6 +21,7 @@ import re
 from pathlib import Path
 
 from kittools import console
+from kittools.build.folder import BuildFolder
 
 #: Twister configurations of tests/floor start with this
 PREFIX = "floor."
@@ -30,8 +31,6 @@ SCENARIO_FILES = "tests/floor/*/testcase.yaml"
 #: tasks (TASK `context`): cooperative slices of a thread-less loop woken from
 #: WFI, or threads, the tick thread handing the tick to a rate-group thread
 PATH_OF_CONTEXT = {"slice": "wfi", "thread": "msgq"}
-#: Where twister's QEMU handler keeps a build's console
-CONSOLE_LOG = "handler.log"
 #: The twister configuration of Zephyr's latency_measure, and its figures:
 #: "<metric> - <description>: <cycles> cycles , <ns> ns"
 LATENCY_MEASURE = "floor.latency_measure"
@@ -46,7 +45,7 @@ def records(builds: list[Path]) -> dict[str, console.Record]:
     floor rather than a wrong one)."""
     found: dict[str, console.Record] = {}
     for build in builds:
-        log = build / CONSOLE_LOG
+        log = BuildFolder(build).console_log
         if not log.is_file():
             continue
         run = console.Run([r for r in map(console.parse_line, log.read_text(errors="replace").splitlines())
@@ -68,7 +67,7 @@ def zephyr_records(builds: list[Path]) -> list[console.Record]:
     """Zephyr's latency_measure figures (ZEPHYR records: metric, description,
     cycles, ns) from its build's console, if it ran to the end."""
     for build in builds:
-        log = build / CONSOLE_LOG
+        log = BuildFolder(build).console_log
         if build.name != LATENCY_MEASURE or not log.is_file():
             continue
         text = log.read_text(errors="replace")

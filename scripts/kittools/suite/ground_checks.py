@@ -16,6 +16,7 @@ from kittools import sweep
 from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.build import runner
 from kittools.link import flood, fuzz, ground, serial_sweep
+from kittools.log import LOG, say
 from kittools.suite import results
 from kittools.suite.counts import Tally, junit_tally, run_logged
 from kittools.suite.platforms import TWISTER_OUT
@@ -98,8 +99,8 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
     if not xml.is_file():
         raise KitError(f"the integration suite wrote no report for {build}; see {logs / 'pytest.log'}")
     tally = junit_tally(xml)
-    print(f"[kit]   {name}: {tally.passed} passed, {tally.failed} failed "
-          f"({time.monotonic() - started:.0f} s; logs {logs})", flush=True)
+    say(f"  {name}: {tally.passed} passed, {tally.failed} failed "
+        f"({time.monotonic() - started:.0f} s; logs {logs})")
     return tally
 
 
@@ -136,8 +137,7 @@ def foreign_dictionary_build(build: Path, name: str, logs: Path) -> Tally:
         failure = None if "is not the one the firmware" in str(error) else f"refused for another reason: {error}"
     if failure is None and not ground.socket_free(link.socket):
         failure = "QEMU still holds the link socket after the refusal"
-    print(f"[kit]   {name}: another build's dictionary: {'refused' if failure is None else 'FAIL: ' + failure}",
-          flush=True)
+    say(f"  {name}: another build's dictionary: {'refused' if failure is None else 'FAIL: ' + failure}")
     return Tally(failed=1) if failure else Tally(passed=1)
 
 
@@ -154,7 +154,7 @@ def _recorded(name: str, what: str, job: Callable[[], _R], path: Path) -> _R | N
     try:
         outcome = job()
     except KitError as error:
-        print(f"[kit]   {name}: {what}: FAIL: {error}", flush=True)
+        LOG.error(f"  {name}: {what}: FAIL: {error}")
         return None
     path.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
     return outcome
@@ -180,8 +180,8 @@ def serial_sweep_build(build: Path, name: str, logs: Path) -> Tally:
     found = outcome.sweep()
     breaks = {f"{axis} {rg}": sweep.level_text(found.breaking_point(axis, rg), found.unit(axis))
               for axis in found.axes() for rg in found.rate_groups()} if found else {}
-    print(f"[kit]   {name}: serial-load sweep, {len(outcome.lines)} points x rate groups, breaking points "
-          f"{breaks} ({time.monotonic() - started:.0f} s)", flush=True)
+    say(f"  {name}: serial-load sweep, {len(outcome.lines)} points x rate groups, breaking points "
+        f"{breaks} ({time.monotonic() - started:.0f} s)")
     return Tally(passed=1)
 
 
@@ -212,16 +212,16 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
         except KitError as error:
             # A failed check, not the end of `kit test`
             (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
-            print(f"[kit]   {name}: fuzzing (seed {FUZZ_SEED}): FAIL: {error}", flush=True)
+            LOG.error(f"  {name}: fuzzing (seed {FUZZ_SEED}): FAIL: {error}")
             return Tally(failed=1)
         (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
     record = outcome.to_json()
     (logs / "fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
     failures = outcome.failures()
-    print(f"[kit]   {name}: fuzzing (seed {outcome.seed}): {outcome.invalid_sent} invalid frames "
-          f"{dict(sorted(outcome.sent.items()))}, {outcome.noops_answered}/{outcome.noops_sent} NO_OPs answered, "
-          f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
-          f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}", flush=True)
+    say(f"  {name}: fuzzing (seed {outcome.seed}): {outcome.invalid_sent} invalid frames "
+        f"{dict(sorted(outcome.sent.items()))}, {outcome.noops_answered}/{outcome.noops_sent} NO_OPs answered, "
+        f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
+        f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}")
     return Tally(failed=1) if failures else Tally(passed=1)
 
 
@@ -234,7 +234,6 @@ def flood_build(build: Path, name: str, logs: Path) -> Tally:
         return Tally(failed=1)
     failures = outcome.failures()
     slips = {line.split(" rg=")[1].split()[0]: line.split(" slips=")[1].split()[0] for line in outcome.sweep_lines}
-    print(f"[kit]   {name}: flood ({outcome.seconds:.1f} s at {outcome.baud} baud): {outcome.record()}, slips "
-          f"{slips} ({time.monotonic() - started:.0f} s): {'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}",
-          flush=True)
+    say(f"  {name}: flood ({outcome.seconds:.1f} s at {outcome.baud} baud): {outcome.record()}, slips "
+        f"{slips} ({time.monotonic() - started:.0f} s): {'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}")
     return Tally(failed=1) if failures else Tally(passed=1)

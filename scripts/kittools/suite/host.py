@@ -9,6 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+from kittools.log import LOG
 from kittools.suite.counts import Tally, gtest_tally, junit_tally, run_logged
 from kittools.workspace import KIT_ROOT, KitError
 
@@ -40,8 +41,7 @@ def run_host_tests(log_dir: Path) -> Tally:
         if code != 0 and tests.failed == 0:
             # Crashed before its report, or a sanitizer (leak, UB) failed it after
             # every test passed: one failure, its log says which
-            print(f"[kit]   {exe.name} exited {code} with no failed test: see {log_dir / (exe.name + '.log')}",
-                  flush=True)
+            LOG.error(f"  {exe.name} exited {code} with no failed test: see {log_dir / (exe.name + '.log')}")
             tally.failed += 1
     if tally.passed + tally.failed == 0:
         raise KitError(f"no host test executable found in {HOST_BUILD / 'bin'}")
@@ -75,7 +75,7 @@ def run_lint(log_dir: Path) -> Tally:
         if code == 0:
             tally.passed += 1
         else:
-            print(f"[kit]   {tool} found problems (exit {code}): see {log}", flush=True)
+            LOG.error(f"  {tool} found problems (exit {code}): see {log}")
             tally.failed += 1
     return tally
 

@@ -11,6 +11,7 @@ import time
 from pathlib import Path
 
 from kittools.boards.suites import BUILD_ONLY_SUITE as BOARDS_SUITE_FILE
+from kittools.log import LOG, say
 from kittools.suite.counts import Tally, twister_tally
 from kittools.suite.platforms import suite_boards
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
@@ -80,8 +81,8 @@ def run_porting_check(log_dir: Path) -> Tally:
         with log.open("w") as to:
             code = subprocess.run(command, cwd=scratch, env=env, stdin=subprocess.DEVNULL, stdout=to,
                                   stderr=subprocess.STDOUT).returncode
-        print(f"[kit]   porting: {name}: {'PASS' if code == 0 else f'FAIL (exit {code}; {log})'} "
-              f"({time.monotonic() - started:.0f} s)", flush=True)
+        say(f"  porting: {name}: {'PASS' if code == 0 else f'FAIL (exit {code}; {log})'} "
+            f"({time.monotonic() - started:.0f} s)")
         return code == 0
 
     def count(passed: bool) -> None:
@@ -92,8 +93,7 @@ def run_porting_check(log_dir: Path) -> Tally:
                    out / "new-board-qemu.log")
     listed_real = PORTING_QEMU_BOARD in suite_boards(scratch / BOARDS_SUITE_FILE)
     if listed_real:
-        print(f"[kit]   porting: {PORTING_QEMU_BOARD} was added to {BOARDS_SUITE_FILE}, the real boards' list",
-              flush=True)
+        LOG.error(f"  porting: {PORTING_QEMU_BOARD} was added to {BOARDS_SUITE_FILE}, the real boards' list")
     count(qemu_ok and not listed_real)
     if qemu_ok:
         compare_out = scratch / "build" / "compare"

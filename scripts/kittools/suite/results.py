@@ -13,7 +13,8 @@ from typing import Any
 
 from kittools import console, metrics, model
 from kittools.build import conditions
-from kittools.link import serial_sweep
+from kittools.build.folder import BuildFolder
+from kittools.link import serial_points
 from kittools.sizes import by_layer, sizing, symbols
 from kittools.sizes.memory import Footprint, measure
 from kittools.suite import floor
@@ -71,10 +72,10 @@ def parse(data: Any, path: str = "results") -> model.Results:
 def twister_build(twister_out: Path, platform: str, scenario: str) -> Path:
     """The build folder twister made for a scenario on a platform."""
     platform_dir = twister_out / platform.replace("/", "_")
-    builds = [p.parent.parent for p in platform_dir.glob(f"**/{scenario}/zephyr/zephyr.elf")]
+    builds = BuildFolder.built_under(platform_dir, scenario)
     if len(builds) != 1:
         raise KitError(f"expected one twister build of {scenario} on {platform}, found {len(builds)}")
-    return builds[0]
+    return builds[0].path
 
 
 #: Where the suite's pytest harness keeps each scenario's console, per build
@@ -222,7 +223,7 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
             for file_name in LINK_RECORD_FILES:
                 records_file = integration_logs(log_dir, platform, build.name) / file_name
                 if records_file.is_file():
-                    link_records += serial_sweep.records_of(records_file)
+                    link_records += serial_points.records_of(records_file)
         found.append(Played(
             platform, run.variant, measure(build), run.records, link_records,
             by_layer.breakdown(rom), by_layer.breakdown(ram), conditions.read(build),

@@ -15,6 +15,7 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from kittools.log import LOG
 from kittools.workspace import KIT_ROOT, KitError
 
 if TYPE_CHECKING:
@@ -113,6 +114,6 @@ def run_style_check(root: Path = KIT_ROOT) -> Tally:
 
     unclean = clang_format_check(root)
     for path in unclean:
-        print(f"[kit]   not in F´ style: {path.relative_to(root)} "
-              f"(fix: clang-format -i {path.relative_to(root)})", flush=True)
+        LOG.error(f"  not in F´ style: {path.relative_to(root)} "
+                  f"(fix: clang-format -i {path.relative_to(root)})")
     return Tally(failed=1) if unclean else Tally(passed=1)

@@ -14,6 +14,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from kittools.build.folder import CONSOLE_LOG, BuildFolder
+from kittools.log import say
 from kittools.sizes import memory
 from kittools.suite import floor, results
 from kittools.suite.counts import Tally, twister_tally
@@ -40,7 +42,7 @@ class TwisterProgress:
     jobs: int | None = None
 
     def line(self, text: str) -> str | None:
-        """What to print for this line of twister's output, or None."""
+        """What to say (a progress line) for this line of twister's output, or None."""
         text = _ANSI.sub("", text).rstrip()
         if match := _JOBS.match(text):
             self.jobs = int(match["jobs"])
@@ -48,7 +50,7 @@ class TwisterProgress:
         if match := _SELECTED.match(text):
             self.total = int(match["configurations"]) - int(match["static"])
             jobs = f", {self.jobs} at a time" if self.jobs else ""
-            return f"[kit]   twister: {self.total} configurations to build and run{jobs}"
+            return f"  twister: {self.total} configurations to build and run{jobs}"
         match = _DONE.match(text)
         if match is None:
             return None
@@ -58,14 +60,14 @@ class TwisterProgress:
         info = f"{float(seconds['s']):.1f} s" if seconds else match["info"]
         reason = f" {match['reason']}" if match["reason"] else ""
         suite = match["suite"].rsplit("/", 1)[-1]
-        return (f"[kit]   {done}/{total} {match['platform']} {suite} {match['status']}{reason} {info} "
+        return (f"  {done}/{total} {match['platform']} {suite} {match['status']}{reason} {info} "
                 f"({max(total - done, 0)} left)")
 
 
-def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None]) -> int:
+def _run_streamed(command: list[str], log: Path, progress: Callable[[str], str | None]) -> int:
     """Run `command`, its whole output into `log`; each line (ended by a
-    newline or a carriage return) is also given to `say`, which returns what
-    to print, if anything."""
+    newline or a carriage return) is also given to `progress`, which returns
+    what to say (a progress line), if anything."""
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("wb") as out:
         # Unbuffered: a Python tool writing to a pipe would otherwise hand its
@@ -78,9 +80,9 @@ def _run_streamed(command: list[str], log: Path, say: Callable[[str], str | None
             out.write(raw)
             out.flush()
             for piece in raw.decode(errors="replace").replace("\r", "\n").splitlines():
-                shown = say(piece)
+                shown = progress(piece)
                 if shown is not None:
-                    print(shown, flush=True)
+                    say(shown)
         return process.wait()
 
 
@@ -114,8 +116,8 @@ class RunWatcher:
                 lines = log.read_text(errors="replace").splitlines()
                 build = log.parent.parent
                 platform = build.relative_to(self._out_dir).parts[0]
-                print(f"[kit]     {platform} {build.name} {log.stem}: {lines[-1] if lines else '(no output)'} "
-                      f"({len(self._seen)} runs played)", flush=True)
+                say(f"    {platform} {build.name} {log.stem}: {lines[-1] if lines else '(no output)'} "
+                    f"({len(self._seen)} runs played)")
 
 
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
@@ -129,7 +131,7 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     the configurations (kit test --subset); two builds or QEMU runs at a time (icount timing does not depend on the
     host's load). Twister's whole output goes to <log_dir>/twister.log; one
     line per finished configuration is printed."""
-    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{floor.CONSOLE_LOG}"):  # the kernel floor's records
+    for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{CONSOLE_LOG}"):  # the kernel floor's records
         console_log.unlink()
     command = ["west", "twister", "-T", "tests", "-j", "2", "--overflow-as-errors"]
     for platform in platforms:
@@ -192,7 +194,7 @@ def play(command: list[str], log: Path, out_dir: Path) -> Tally:
         # the file (OVERLAY_CONFIG) and twister no longer passes it.
         for overlay in out_dir.glob("*/**/twister/testsuite_extra.conf"):
             overlay.unlink()
-            (overlay.parent.parent / "CMakeCache.txt").unlink(missing_ok=True)
+            BuildFolder(overlay.parent.parent).cmake_cache.unlink(missing_ok=True)
     # The last run's consoles go first: a scenario this run does not play (or
     # a build that fails) must not lend its old log to the results.
     for runs in out_dir.glob(f"*/**/{results.RUNS_DIR}"):
@@ -223,8 +225,8 @@ def say_built_only(out_dir: Path = TWISTER_OUT) -> None:
         return  # a build that failed: twister's tally counts it
     for platform, build in builds:
         size = memory.measure(build)
-        print(f"[kit]   {platform} {build.name}: built, not run (no emulator; docs/porting.md): "
-              f"ROM {size.rom:,} of {size.rom_size:,} B, RAM {size.ram:,} of {size.ram_size:,} B", flush=True)
+        say(f"  {platform} {build.name}: built, not run (no emulator; docs/porting.md): "
+            f"ROM {size.rom:,} of {size.rom_size:,} B, RAM {size.ram:,} of {size.ram_size:,} B")
 
 
 def say_profiles(out_dir: Path = TWISTER_OUT) -> None:
@@ -241,10 +243,8 @@ def say_profiles(out_dir: Path = TWISTER_OUT) -> None:
         size = memory.measure(build)
         kit_build = kit_builds.get((platform, f"kit.{model}"))
         if kit_build is None:
-            print(f"[kit]   {platform} {model} with fprime-{profile}: ROM {size.rom:,} B, RAM {size.ram:,} B",
-                  flush=True)
+            say(f"  {platform} {model} with fprime-{profile}: ROM {size.rom:,} B, RAM {size.ram:,} B")
             continue
         kit = memory.measure(kit_build)
-        print(f"[kit]   {platform} {model} with fprime-{profile}: ROM {size.rom:,} B ({size.rom - kit.rom:+,} from "
-              f"the kit profile's {kit.rom:,}), RAM {size.ram:,} B ({size.ram - kit.ram:+,} from {kit.ram:,})",
-              flush=True)
+        say(f"  {platform} {model} with fprime-{profile}: ROM {size.rom:,} B ({size.rom - kit.rom:+,} from "
+            f"the kit profile's {kit.rom:,}), RAM {size.ram:,} B ({size.ram - kit.ram:+,} from {kit.ram:,})")

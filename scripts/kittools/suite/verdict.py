@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from kittools.log import LOG, say
 from kittools.model import Results
 from kittools.sizes import by_layer, sizing, symbols
 from kittools.suite import budget, results, shards
@@ -59,30 +60,30 @@ def judge(data: Results, board: str, log_dir: Path, limits: budget.Budget, updat
     current.write_text(json.dumps(data.to_json(), indent=2) + "\n")
     if update_baseline:
         write_baseline(data, baseline_path)
-        print(f"[kit]   baseline written: {baseline_path}", flush=True)
+        say(f"  baseline written: {baseline_path}")
     if not baseline_path.is_file():
         raise KitError(f"no baseline for {board} ({baseline_path}): run `scripts/kit test --board {board} "
                        "--update-baseline` once and commit the file")
     baseline = results.load(baseline_path)
     verdict = budget.check(data, baseline, limits)
     for violation in verdict.violations:
-        print(f"[kit]   budget: {violation}", flush=True)
+        LOG.error(f"  budget: {violation}")
     undersized = [f"{name}: {fault}" for name in data.names()
                   for fault in sizing.too_small([sizing.Advice.from_json(t)
                                                  for t in data.variants[name].sizing.get("tables", [])])]
     for fault in undersized:
-        print(f"[kit]   sizing: {fault}", flush=True)
+        LOG.error(f"  sizing: {fault}")
     for variant, sizes in verdict.sizes:
         if variant in verdict.over_size:  # a failed size budget says which symbols grew
             for line in symbols.render(sizes, limit=15):
-                print(f"[kit]   {variant}: {line}", flush=True)
+                LOG.error(f"  {variant}: {line}")
     tally = Tally(passed=1) if verdict.passed else Tally(failed=1)
     tally.add(Tally(failed=1) if undersized else Tally(passed=1))
     # The report is for the reader; the verdict above does not depend on it
     from kittools.report import writer
 
-    writer.write(data, out_dir / "report", baseline, limits)
-    print(f"[kit]   {board}: report against {baseline_path.name}: {out_dir / 'report' / 'report.html'}", flush=True)
+    writer.write(data, out_dir / "report", baseline, limits, verdict=verdict)
+    say(f"  {board}: report against {baseline_path.name}: {out_dir / 'report' / 'report.html'}")
     return tally
 
 
@@ -101,7 +102,7 @@ def write_built_only(data: Results, board: str, log_dir: Path) -> Tally:
     from kittools.report import writer  # for the reader; kept out of the budget gate's imports
 
     writer.write(data, out_dir / "report")
-    print(f"[kit]   {board}: built only, ROM and RAM by layer: {out_dir / 'report' / 'report.html'}", flush=True)
+    say(f"  {board}: built only, ROM and RAM by layer: {out_dir / 'report' / 'report.html'}")
     return Tally(passed=1)
 
 
@@ -121,7 +122,7 @@ def write_shard(board: str, log_dir: Path, built_only: bool = False) -> Tally:
         shard = shards.BoardShard(board, found, floors)
     path = shards.write(shard, log_dir)
     made = [p.variant for p in shard.played] + list(shard.built_only.variants if shard.built_only else ())
-    print(f"[kit]   {board}: this shard's part ({', '.join(made) or 'kernel floor only'}): {path}", flush=True)
+    say(f"  {board}: this shard's part ({', '.join(made) or 'kernel floor only'}): {path}")
     return Tally(passed=1)
 
 
