@@ -37,6 +37,7 @@ def test_the_compiler_knobs_move_what_the_kit_sets():
     assert "CONFIG_LTO=y" in prj and "CONFIG_ISR_TABLES_LOCAL_DECLARATION=y" in prj
     lto = ablation.COMPILER_KNOBS[0]
     assert all(s.endswith("=n") and s.replace("=n", "=y") in prj for s in lto.settings)
+    assert 'CONFIG_COMPILER_OPT="-fconserve-stack"' in prj
 
 
 def test_every_profile_sets_only_switches_of_modules_fprime():
@@ -80,5 +81,6 @@ def test_a_knob_filter_keeps_the_profile_and_the_knobs_it_names():
     assert ablation.chosen(plan, []) == plan
     assert [k.name for k in ablation.chosen(plan, ["OPTIMIZATION"])] == [
         "profile", "link-time optimization: on -> off", "optimization: -Os -> -O2", "optimization: -Os -> -Og"]
+    assert [k.name for k in ablation.chosen(plan, ["stack"])] == ["profile", "-fconserve-stack: on -> off"]
     with pytest.raises(KitError, match="no knob matches 'nothing'; the knobs are: asserts: none; link-time"):
         ablation.chosen(plan, ["nothing"])

@@ -79,9 +79,11 @@ SERVICE_KNOBS = (
 
 
 #: Whole-build compiler and linker options, each moved off the kit's choice
-#: (app/prj.conf: link-time optimization; Zephyr's default -Os)
+#: (app/prj.conf: link-time optimization, -fconserve-stack; Zephyr's default -Os)
 COMPILER_KNOBS = (
     Knob("link-time optimization: on -> off", ("CONFIG_LTO=n", "CONFIG_ISR_TABLES_LOCAL_DECLARATION=n")),
+    # what keeps LTO's inlining from deepening the stacks (app/prj.conf)
+    Knob("-fconserve-stack: on -> off", ('CONFIG_COMPILER_OPT=""',)),
     Knob("optimization: -Os -> -O2", ("CONFIG_SPEED_OPTIMIZATIONS=y",)),
     Knob("optimization: -Os -> -Og", ("CONFIG_DEBUG_OPTIMIZATIONS=y",)),
 )
