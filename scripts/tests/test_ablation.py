@@ -13,7 +13,7 @@ def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_le
     default = {"CONFIG_FPRIME": "y", "CONFIG_FPRIME_ASSERT_FILE_NAME": "y", "CONFIG_FPRIME_OBJECT_NAMES": "y",
                "CONFIG_FPRIME_COM_BUFFER_MAX_SIZE": "512", "CONFIG_FPRIME_CMD_STRING_MAX_SIZE": "40"}
     found = ablation.knobs(kit, default, "rtos")
-    compilers = [k.name for k in ablation.COMPILER_KNOBS]
+    compilers = [k.name for k in ablation.COMPILER_KNOBS]  # no build given: every one
     assert [k.name for k in found] == [
         "profile", "asserts: none", "asserts: file_id", "asserts: file_name",
         "com_buffer_max_size: 128 -> 512", "object_names: n -> y", *compilers]
@@ -21,33 +21,28 @@ def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_le
         "telemetry store: TlmChan -> TlmLinearChan", "command dispatcher: CommandDispatcher -> PassiveCmdDispatcher"]
     # A policy that selects a service's other form already (baremetal_passive's dispatcher) has no knob for it
     passive = {"CONFIG_KIT_MODEL_BAREMETAL": "y", "CONFIG_KIT_CMD_DISPATCHER_PASSIVE": "y"}
-    assert [k.name for k in ablation.knobs(kit, default, "baremetal", passive)[-1 - len(compilers):]] == [
-        "telemetry store: TlmChan -> TlmLinearChan", *compilers]
+    assert [k.name for k in ablation.knobs(kit, default, "baremetal", passive)
+            if k not in ablation.COMPILER_KNOBS][-1:] == ["telemetry store: TlmChan -> TlmLinearChan"]
     assert found[1].settings == ("CONFIG_FPRIME_ASSERT_NONE=y",)
     assert found[5].settings == ("CONFIG_FPRIME_OBJECT_NAMES=y",)
-    # A build already off the kit's choice (no LTO) has no knob to move it there
-    no_lto = {"CONFIG_LTO": "n", "CONFIG_ISR_TABLES_LOCAL_DECLARATION": "n"}
-    assert "link-time optimization: on -> off" not in [k.name for k in ablation.knobs(kit, default, "rtos", no_lto)]
 
 
 def test_the_compiler_knobs_move_what_the_kit_sets():
-    """Each compiler knob moves an option off the kit's own choice: LTO is on in
-    app/prj.conf, so its knob turns it off; the optimization knobs leave -Os."""
-    prj = (KIT_ROOT / "app" / "prj.conf").read_text()
-    assert "CONFIG_LTO=y" in prj and "CONFIG_ISR_TABLES_LOCAL_DECLARATION=y" in prj
-    lto = ablation.COMPILER_KNOBS[0]
-    assert all(s.endswith("=n") and s.replace("=n", "=y") in prj for s in lto.settings)
-    assert 'CONFIG_COMPILER_OPT="-fconserve-stack"' in prj
-
-
-def test_every_profile_sets_only_switches_of_modules_fprime():
-    kconfig = (KIT_ROOT / "modules" / "fprime" / "Kconfig").read_text()
-    symbols = set(re.findall(r"^config (FPRIME_\w+)$", kconfig, re.MULTILINE))
-    assert {"fprime-default", "fprime-kit"} <= set(ablation.profiles())
-    for profile in ablation.profiles():
-        conf = ablation.SNIPPETS / profile / f"{profile}.conf"
-        assigned = re.findall(r"^CONFIG_(\w+)=", conf.read_text(), re.MULTILINE)
-        assert set(assigned) <= symbols, f"{conf}: {set(assigned) - symbols} are not modules/fprime switches"
+    """Each compiler knob moves an option off the model's own choice: LTO is on
+    in the baremetal model (baremetal/Kconfig.model), so its knob there turns it
+    off; rtos has none, so its knob turns it on; the optimization knobs leave -Os."""
+    model = (KIT_ROOT / "baremetal" / "Kconfig.model").read_text()
+    assert all(re.search(rf"config {name}\n\tdefault y", model) for name in ("LTO", "ISR_TABLES_LOCAL_DECLARATION"))
+    assert 'config COMPILER_OPT\n\tdefault "-fconserve-stack"' in model
+    kit = {"CONFIG_FPRIME_ASSERT_RELATIVE_PATH": "y"}
+    baremetal = {"CONFIG_LTO": "y", "CONFIG_ISR_TABLES_LOCAL_DECLARATION": "y",
+                 "CONFIG_COMPILER_OPT": "-fconserve-stack"}
+    names = [k.name for k in ablation.knobs(kit, kit, "baremetal", baremetal)]
+    assert "link-time optimization: on -> off" in names and "link-time optimization: off -> on" not in names
+    rtos = {"CONFIG_COMPILER_OPT": ""}
+    names = [k.name for k in ablation.knobs(kit, kit, "rtos", rtos)]
+    assert "link-time optimization: off -> on" in names and "link-time optimization: on -> off" not in names
+    assert "-fconserve-stack: on -> off" not in names
 
 
 def test_the_table_says_what_each_knob_cost_and_broke(tmp_path):
@@ -80,7 +75,8 @@ def test_a_knob_filter_keeps_the_profile_and_the_knobs_it_names():
     plan = [ablation.Knob("profile"), ablation.Knob("asserts: none"), *ablation.COMPILER_KNOBS]
     assert ablation.chosen(plan, []) == plan
     assert [k.name for k in ablation.chosen(plan, ["OPTIMIZATION"])] == [
-        "profile", "link-time optimization: on -> off", "optimization: -Os -> -O2", "optimization: -Os -> -Og"]
+        "profile", "link-time optimization: on -> off", "link-time optimization: off -> on",
+        "optimization: -Os -> -O2", "optimization: -Os -> -Og"]
     assert [k.name for k in ablation.chosen(plan, ["stack"])] == ["profile", "-fconserve-stack: on -> off"]
     with pytest.raises(KitError, match="no knob matches 'nothing'; the knobs are: asserts: none; link-time"):
         ablation.chosen(plan, ["nothing"])

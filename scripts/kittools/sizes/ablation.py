@@ -79,9 +79,12 @@ SERVICE_KNOBS = (
 
 
 #: Whole-build compiler and linker options, each moved off the kit's choice
-#: (app/prj.conf: link-time optimization, -fconserve-stack; Zephyr's default -Os)
+#: (baremetal/Kconfig.model: link-time optimization, -fconserve-stack; Zephyr's default -Os)
 COMPILER_KNOBS = (
     Knob("link-time optimization: on -> off", ("CONFIG_LTO=n", "CONFIG_ISR_TABLES_LOCAL_DECLARATION=n")),
+    # the model without it (rtos/Kconfig.model): what it would give
+    Knob("link-time optimization: off -> on", ("CONFIG_LTO=y", "CONFIG_ISR_TABLES_LOCAL_DECLARATION=y",
+                                               'CONFIG_COMPILER_OPT="-fconserve-stack"')),
     # what keeps LTO's inlining from deepening the stacks (app/prj.conf)
     Knob("-fconserve-stack: on -> off", ('CONFIG_COMPILER_OPT=""',)),
     Knob("optimization: -Os -> -O2", ("CONFIG_SPEED_OPTIMIZATIONS=y",)),
@@ -125,7 +128,9 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[s
             name = key.removeprefix(FPRIME_SWITCH).lower()
             found.append(Knob(f"{name}: {before} -> {after}", (f"{key}={after}",)))
     def has(knob: Knob) -> bool:
-        return built is not None and all(built.get(k) == v for k, v in (s.split("=", 1) for s in knob.settings))
+        # an unset bool reads as n; a string's quotes are not part of its value
+        return built is not None and all(built.get(k, "n") == v.strip('"')
+                                         for k, v in (s.split("=", 1) for s in knob.settings))
 
     services = [k for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
     return found + services + [k for k in COMPILER_KNOBS if not has(k)]
