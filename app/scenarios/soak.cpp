@@ -9,8 +9,7 @@
 // marks stopped growing after the first checkpoint (flat: whatever the run
 // does in minute 10 it already did in minute 1, the checkpoint's own report
 // included: the reference is taken after it, since printing the line and
-// starting the next segment run on the main stack too; with link-time
-// optimization they reached 8 B deeper than minute 1's run had).
+// starting the next segment run on the main stack too).
 // ======================================================================
 #include "app/Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
