@@ -85,7 +85,9 @@ const DispatchStages& stages() {
 }
 
 void reset() {
-    s_stages.reset();
+    if (IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES)) {
+        s_stages.reset();
+    }
 }
 
 }  // namespace Stages

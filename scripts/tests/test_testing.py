@@ -242,7 +242,7 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
     _fake_twister(monkeypatch, commands)
     assert play() == (False, True)  # nothing configured yet: twister configures
     assert play() == (True, False)  # as configured then: ninja's own checks suffice
-    suite.write_text("tests: {kit.rtos: {extra_args: SNIPPET=fprime-minimal}}\n")
+    suite.write_text("tests: {kit.rtos: {extra_args: SNIPPET=fprime-small}}\n")
     assert play() == (False, True)  # twister hands extra_args to CMake only when it configures
     monkeypatch.setattr(twister, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "zephyr"})
     assert play() == (False, True)  # another toolchain

@@ -19,17 +19,24 @@ inline U32 elapsedCycles(U32 from, U32 to) {
     return static_cast<U32>(to - from);
 }
 
-//! Fixed-bucket, log-linear histogram of cycle counts. Values below 16 have a
-//! bucket each; above, every power of two is split into 8 buckets, so a
-//! bucket is at most 12.5% wide relative to its values. Values from 245,760
-//! cycles (20.5 ms at 12 MHz) up share the last bucket. 512 bytes of RAM,
-//! whatever the run length: percentiles without storing samples.
+//! Fixed-bucket, log-linear histogram of cycle counts. Every power of two is
+//! split into SUB buckets (values below 2 * SUB have a bucket each), so a
+//! bucket is at most 1/SUB wide relative to its values; values from about
+//! 2^18 cycles (21.8 ms at 12 MHz) up share the last bucket. Fixed RAM
+//! whatever the run length (512 B at the kit's 8 buckets per power of two,
+//! 272 B at 4): percentiles without storing samples.
 class Histogram {
   public:
-    static constexpr U32 SUB_BITS = 3;
+#if defined(CONFIG_KIT_TIMING_SUB_BITS)
+    static constexpr U32 SUB_BITS = CONFIG_KIT_TIMING_SUB_BITS;  // app/Kconfig
+#else
+    static constexpr U32 SUB_BITS = 3;  // the kit's default, where there is no Kconfig (host unit tests)
+#endif
     static constexpr U32 SUB = 1u << SUB_BITS;  //!< buckets per power of two
-    static constexpr U32 BUCKETS = 128;
+    static constexpr U32 TOP_BITS = 18;         //!< the last bucket starts below 2^TOP_BITS
+    static constexpr U32 BUCKETS = SUB * (TOP_BITS - SUB_BITS + 1);
     static constexpr U32 LAST = BUCKETS - 1;  //!< also holds everything beyond its lower bound
+    static_assert(SUB_BITS >= 1 && SUB_BITS < TOP_BITS, "SUB_BITS out of range");
 
     //! Bucket of a value
     static U32 bucketOf(U32 value);

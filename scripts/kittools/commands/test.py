@@ -71,8 +71,12 @@ class FullRun:
             raise KitError("--update-baseline needs the whole run on one machine: a shard holds part of each board")
         # The real boards are built and not run (tests/boards): no budget, no
         # ground link, nothing to play
-        self.boards = ([b for b in args.board if not platforms.is_real_board(b)] if args.board
-                       else platforms.suite_boards())
+        self.boards = ([b for b in args.board if not platforms.is_real_board(b) and not platforms.is_small_part(b)]
+                       if args.board else platforms.suite_boards())
+        # The small parts play the builds that fit them (the fprime-small
+        # profile's) and the ground link: no comparison, so no budget
+        self.small = ([b for b in args.board if platforms.is_small_part(b)] if args.board
+                      else platforms.small_parts())
         self.built_only = ([b for b in args.board if platforms.is_real_board(b)] if args.board
                            else platforms.suite_boards(platforms.BUILD_ONLY_SUITE))
         check_provisioned()
@@ -85,7 +89,8 @@ class FullRun:
         self.size_reports: concurrent.futures.Future[None] = concurrent.futures.Future()
 
     def twister(self) -> Tally:
-        return twister.run_twister(self.boards + self.built_only, self.log_dir, subset=self.args.subset)
+        return twister.run_twister(self.boards + self.small + self.built_only, self.log_dir,
+                                   subset=self.args.subset)
 
     def determinism(self) -> Tally:
         threading.Thread(target=settle, args=(self.size_reports, functools.partial(
@@ -114,8 +119,9 @@ class FullRun:
         if not args.skip_twister:
             built = f"; built only: {', '.join(self.built_only)}" if self.built_only else ""
             share = f", twister's share {args.subset}" if subset else ""
-            steps.add_qemu(f"twister suite under QEMU ({', '.join(boards)}{built}{share})", self.twister)
-            if boards:  # what reads the runs: none on a board only built
+            small = f"; small parts, fprime-small: {', '.join(self.small)}" if self.small else ""
+            steps.add_qemu(f"twister suite under QEMU ({', '.join(boards)}{small}{built}{share})", self.twister)
+            if boards or self.small:  # what reads the runs: none on a board only built
                 steps.add_qemu("determinism: twister's binaries run again (size reports in the background)",
                                self.determinism)
                 # Before the budget: the board's report takes the serial-load sweep from it

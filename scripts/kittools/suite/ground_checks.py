@@ -17,7 +17,7 @@ from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.build import runner
 from kittools.link import flood, fuzz, ground, serial_sweep
 from kittools.log import LOG, say
-from kittools.suite import results
+from kittools.suite import platforms, results
 from kittools.suite.counts import Tally, junit_tally, run_logged
 from kittools.suite.platforms import TWISTER_OUT
 from kittools.workspace import KIT_ROOT, KitError, check_board
@@ -39,8 +39,11 @@ RAW_LINK_JOBS = 2
 def ground_builds(required: bool = True) -> list[tuple[str, Path]]:
     """(platform, build) of every build of the last twister run that can
     play the ground scenario; none is an error where `required`."""
-    builds = [(platform, build) for platform, build in results.suite_builds(TWISTER_OUT)
-              if ground.serves_ground(build)]
+    # The comparison's builds, and on a small part the profile's that fit it
+    candidates = results.suite_builds(TWISTER_OUT) + [
+        (platform, build) for platform, build in results.suite_builds(TWISTER_OUT, prefix=results.PROFILE_PREFIX)
+        if platforms.is_small_part(platform)]
+    builds = [(platform, build) for platform, build in candidates if ground.serves_ground(build)]
     if not builds and required:
         raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
     return builds

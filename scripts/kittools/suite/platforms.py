@@ -29,6 +29,31 @@ def suite_boards(suite: Path = SUITE) -> list[str]:
     return [str(p) for p in platforms]
 
 
+def small_parts(suite: Path = SUITE) -> list[str]:
+    """The suite's small parts: boards a scenario of `suite` allows beyond
+    its common platform_allow list (the kit's emulated small part,
+    qemu_cortex_m3_small), on which only the builds that fit play: the
+    fprime-small profile's (tests/deployment's profile.small.* scenarios).
+    They have no comparison of the models, so no baseline; twister's tally
+    and the ground link judge them."""
+    import yaml
+
+    data = yaml.safe_load(suite.read_text())
+    common = [str(board) for board in data["common"]["platform_allow"]]
+    found: list[str] = []
+    for scenario in (data.get("tests") or {}).values():
+        for board in (scenario or {}).get("platform_allow") or []:
+            if str(board) not in common + found:
+                found.append(str(board))
+    return found
+
+
+def is_small_part(board: str) -> bool:
+    """A board of small_parts(), as the suite names it or as twister does
+    (with its qualifiers: qemu_cortex_m3_small/ti_lm3s6965)."""
+    return any(board == small or board.startswith(small + "/") for small in small_parts())
+
+
 def is_real_board(board: str) -> bool:
     """A board the kit builds and does not run (tests/boards), however the
     board target is spelled (nucleo_f401re, nucleo_f401re/stm32f401xe)."""
@@ -43,3 +68,7 @@ def check_runs_here(board: str) -> None:
         raise KitError(f"{board} is a real board: the kit builds it (kit test, tests/boards) but cannot run it "
                        f"here (no emulator; on the board itself: kit test --device-testing --hardware-map FILE). "
                        f"Boards it runs on: {', '.join(suite_boards())}")
+    if is_small_part(board):
+        raise KitError(f"{board} is a small part: the kit profile's builds of the models do not fit it, so there "
+                       f"is nothing to compare; the suite plays the fprime-small profile there (kit test --board "
+                       f"{board}). Boards the models are compared on: {', '.join(suite_boards())}")
