@@ -624,3 +624,63 @@ def test_no_free_pins_is_said_with_the_pins_in_use(tmp_path):
     assert spare is None
     assert reason.startswith("st/l1/stm32l152retx-pinctrl.dtsi names no TX and RX pins free on this board for "
                              "usart1, uart4") and "pa10" in reason
+
+
+# --- a small board --------------------------------------------------------
+
+SMALL_SUITE = SUITE + """  profile.small.baremetal_passive:
+    platform_allow:
+      - qemu_cortex_m3
+      - qemu_cortex_m3_small
+    extra_args: SNIPPET=fprime-small
+"""
+
+
+def _kit_with_small_part(tmp_path: Path) -> Path:
+    """The fake kit with a small part: its folder, its baseline (the
+    fprime-small build it plays) and its scenario in the suite."""
+    root = _kit(tmp_path, {"baremetal_passive": (110_000, 44_000), "rtos": (120_000, 60_000)})
+    part = root / "boards" / "qemu_cortex_m3_small"
+    part.mkdir()
+    (part / "Kconfig.defconfig").write_text("config ISR_STACK_SIZE\n\tdefault 512\n")
+    (part / "kit.conf").write_text("CONFIG_QEMU_ICOUNT=y\n")
+    (part / "app.overlay").write_text('#include "../qemu_cortex_m3/app.overlay"\n')
+    (part / "board").mkdir()  # its Zephyr board definition: not a port's file
+    (root / "tests" / "baselines" / "qemu_cortex_m3_small.json").write_text(
+        json.dumps(_results({"small.baremetal_passive": (105_700, 36_600)})))
+    (root / "tests" / "deployment" / "testcase.yaml").write_text(SMALL_SUITE)
+    return root
+
+
+def test_a_board_the_kit_profile_does_not_fit_takes_the_small_parts_build_that_fits(tmp_path):
+    root = _kit_with_small_part(tmp_path)
+    zephyr = _zephyr(tmp_path)
+    _platform(zephyr, "qemu/g0", "qemu_g0", "identifier: qemu_g0\narch: arm\nram: 36\nflash: 128\n"
+              "simulation: qemu\n")
+    said: list[str] = []
+    folder = boards.new_board("qemu_g0", root=root, zephyr=zephyr, say=said.append)
+    text = "\n".join(said)
+    assert "the kit profile does not fit" in text
+    assert ("the smallest build that passes the suite and fits: baremetal_passive with fprime-small, as measured "
+            "on qemu_cortex_m3_small") in text
+    # The port starts from the small part's folder (its stacks and heap), not its Zephyr board
+    assert (folder / "Kconfig.defconfig").read_text().endswith("config ISR_STACK_SIZE\n\tdefault 512\n")
+    assert not (folder / "board").exists()
+    # ... and joins the fprime-small scenario, not the whole suite
+    suite = (root / "tests" / "deployment" / "testcase.yaml").read_text()
+    assert suite.count("qemu_g0") == 1
+    assert suite.index("qemu_g0") > suite.index("profile.small.baremetal_passive")
+
+
+def test_a_board_too_small_for_the_small_part_too_is_refused(tmp_path):
+    root = _kit_with_small_part(tmp_path)
+    with pytest.raises(KitError, match="Nor does the smallest build of a small part"):
+        boards.new_board("qemu_cortex_m0", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
+
+
+def test_a_small_real_board_joins_the_small_builds_of_the_real_boards():
+    text = BOARDS_SUITE + "  board.small.baremetal_passive:\n    extra_args: SNIPPET=fprime-small\n"
+    after = boards.add_to_scenario_lists(text, "board.small.", "nucleo_g071rb")
+    assert after == text.replace("  board.small.baremetal_passive:\n",
+                                 "  board.small.baremetal_passive:\n    platform_allow:\n      - nucleo_g071rb\n")
+    assert boards.add_to_scenario_lists(after, "board.small.", "nucleo_g071rb") == after  # once

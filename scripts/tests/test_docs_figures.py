@@ -11,7 +11,8 @@ board folder, variant, and a metric key of the baseline (or
 that axis: its BREAK record). The text must show the baseline's value as
 written: bytes and counts with thousands separators, microseconds to the
 decimals the text shows. A marker with no figure right before it fails
-too, and the pages quote a few figures (10 to 30), not the whole report.
+too, and the pages quote a few figures (10 to 36: a few per board the
+pages discuss), not the whole report.
 """
 
 from __future__ import annotations
@@ -80,7 +81,7 @@ def test_every_marked_figure_is_the_baselines() -> None:
     problems = [p for page in PAGES for p in mismatches(page.read_text(), str(page.relative_to(ROOT)))]
     assert not problems, "\n".join(problems)
     count = sum(len(MARKER.findall(page.read_text())) for page in PAGES)
-    assert 10 <= count <= 30, f"{count} figures: a few well-chosen ones, not every number of the report"
+    assert 10 <= count <= 36, f"{count} figures: a few well-chosen ones, not every number of the report"
 
 
 def test_a_wrong_figure_or_an_unknown_key_is_found() -> None:

@@ -37,9 +37,11 @@ def test_the_real_boards_build_every_variant_and_run_nothing():
 
     suite = yaml.safe_load(platforms.BUILD_ONLY_SUITE.read_text())
     assert suite["common"]["build_only"] is True
+    # every variant, and the small part's build (board.small.<variant>: the deployment suite's profile.small.*)
+    deployment = yaml.safe_load(platforms.SUITE.read_text())["tests"]
     assert sorted(name.removeprefix(results.BUILD_ONLY_PREFIX) for name in suite["tests"]) == sorted(
-        name.removeprefix("kit.") for name in yaml.safe_load(platforms.SUITE.read_text())["tests"]
-        if name.startswith("kit."))
+        [name.removeprefix("kit.") for name in deployment if name.startswith("kit.")]
+        + [name.removeprefix(results.PROFILE_PREFIX) for name in deployment if name.startswith("profile.small.")])
     assert not set(platforms.suite_boards(platforms.BUILD_ONLY_SUITE)) & set(platforms.suite_boards())
 
 

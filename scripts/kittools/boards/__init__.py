@@ -23,7 +23,14 @@ from __future__ import annotations
 from kittools.boards.devicetree import SpareUart, link_uarts, spare_uart
 from kittools.boards.memory import check_fit, smallest_models
 from kittools.boards.scaffold import REFERENCE_BOARD, TODOS, new_board, with_todo
-from kittools.boards.suites import BUILD_ONLY_SUITE, add_to_twister_lists, allow_module, suite_files, twister_files
+from kittools.boards.suites import (
+    BUILD_ONLY_SUITE,
+    add_to_scenario_lists,
+    add_to_twister_lists,
+    allow_module,
+    suite_files,
+    twister_files,
+)
 from kittools.boards.zephyr import HalModule, ZephyrBoard, check_arch, find_board, hal_module
 
 __all__ = [
@@ -33,6 +40,7 @@ __all__ = [
     "HalModule",
     "SpareUart",
     "ZephyrBoard",
+    "add_to_scenario_lists",
     "add_to_twister_lists",
     "allow_module",
     "check_arch",

@@ -4,12 +4,13 @@ measured on a ported board (that board's results file)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 from kittools import model
 from kittools.boards.zephyr import ZephyrBoard
 from kittools.suite import results
-from kittools.workspace import VARIANTS, KitError
+from kittools.workspace import VARIANTS, KitError, board_dir_name
 
 # What to shrink when a resource is short, from docs/porting.md, "Memory budget"
 _LEVERS = {
@@ -73,3 +74,40 @@ def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -
                          "deployment shrinks (docs/porting.md, 'Memory budget')")
     return lines
 
+
+
+@dataclass(frozen=True)
+class SmallFit:
+    """The smallest build of a small part (its baseline: the fprime-small
+    builds the suite plays there) that a board can hold."""
+    part: str  # the small part's board folder, which a small board's port starts from
+    variant: str  # as its baseline names it: <profile>.<variant> (small.baremetal_passive)
+    lines: list[str]
+
+    @property
+    def described(self) -> str:
+        profile, _, variant = self.variant.partition(".")
+        return f"{variant} with fprime-{profile}"
+
+
+def fit_small_part(board: ZephyrBoard, root: Path, parts: list[str]) -> SmallFit | None:
+    """Where the kit profile does not fit `board`: the smallest build among
+    the small parts' baselines (tests/baselines/<part>.json) that it holds,
+    with a headroom line per build measured there; None when none fits (or
+    no small part has a baseline yet)."""
+    have = {"flash": (board.flash_kib or 0) * 1024, "RAM": (board.ram_kib or 0) * 1024}
+    candidates: list[tuple[int, int, str, str]] = []
+    for part in parts:
+        path = root / "tests" / "baselines" / f"{board_dir_name(part)}.json"
+        if path.is_file():
+            for variant, found in results.load(path).variants.items():
+                candidates.append((int(found.metrics[model.RAM]), int(found.metrics[model.ROM]), board_dir_name(part),
+                                   variant))
+    fitting = [c for c in sorted(candidates) if c[1] <= have["flash"] and c[0] <= have["RAM"]]
+    if not fitting:
+        return None
+    ram, rom, part, variant = fitting[0]
+    lines = [f"{v} (measured on {p}{', the smallest that fits' if (p, v) == (part, variant) else ''}): "
+             f"flash {r_o / 1024:.1f} of {have['flash'] / 1024:.0f} KiB, RAM {r_a / 1024:.1f} of "
+             f"{have['RAM'] / 1024:.0f} KiB" for r_a, r_o, p, v in sorted(candidates)]
+    return SmallFit(part, variant, lines)

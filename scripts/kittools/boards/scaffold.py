@@ -11,13 +11,15 @@ from pathlib import Path
 
 from kittools import log, workspace
 from kittools.boards.devicetree import link_uarts, spare_uart
-from kittools.boards.memory import check_fit, smallest_models
-from kittools.boards.suites import allow_module, join_suite
-from kittools.boards.zephyr import check_arch, find_board, hal_module, zephyr_version
-from kittools.suite import results
+from kittools.boards.memory import SmallFit, check_fit, fit_small_part, smallest_models
+from kittools.boards.suites import allow_module, join_small_suite, join_suite
+from kittools.boards.zephyr import ZephyrBoard, check_arch, find_board, hal_module, zephyr_version
+from kittools.suite import platforms, results
 from kittools.workspace import KitError, board_dir_name, board_folder, ported_boards
 
 REFERENCE_BOARD = "qemu_cortex_m3"
+#: The suite whose small parts (boards only its fprime-small scenarios allow) measured what a small board holds
+SMALL_PART_SUITE = Path("tests") / "deployment" / "testcase.yaml"
 
 # What the porter must check in each file of the new folder (docs/porting.md)
 TODOS: dict[str, tuple[str, ...]] = {
@@ -181,6 +183,35 @@ def _copy_folder(reference_dir: Path, folder: Path, identifier: str, root: Path,
 
 
 
+def _fit(board: ZephyrBoard, baseline: Path, shown_as: str, reference: str, root: Path,
+         say: Callable[[str], None]) -> SmallFit | None:
+    """The board's memory against the deployment's measured need: the kit
+    profile's smallest model (the reference's baseline), else the smallest
+    build a small part plays that the board holds (None: the kit profile
+    fits); KitError when neither does."""
+    try:
+        lines = check_fit(board, baseline, shown_as)
+    except KitError as refused:
+        small = fit_small_part(board, root, platforms.small_parts(root / SMALL_PART_SUITE))
+        if small is None:
+            raise KitError(f"{refused} Nor does the smallest build of a small part (tests/baselines of "
+                           "the suite's small parts; docs/porting.md, 'A small part').") from refused
+        say(f"memory: the kit profile does not fit ({refused})")
+        for line in small.lines:
+            say(f"memory: {line}")
+        say(f"memory: the smallest build that passes the suite and fits: {small.described}, as measured on "
+            f"{small.part}, whose stacks and heap this port starts from (boards/{small.part}/Kconfig.defconfig); "
+            "the board joins the suite's fprime-small builds only")
+        return small
+    for line in lines:
+        say(f"memory: {line}")
+    named = " and ".join(dict.fromkeys(smallest_models(results.load(baseline)).values()))
+    say(f"memory: an estimate from {reference}'s build ({shown_as}), the board checked against its smallest "
+        f"model, {named} (kit profile); ROM can differ a few % on another board, so the real check is this "
+        "port's own run")
+    return None
+
+
 def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False,
               say: Callable[[str], None] = log.say, root: Path | None = None, zephyr: Path | None = None) -> Path:
     """Check the board, scaffold boards/<dir>/ from the reference's folder and
@@ -196,16 +227,13 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
     baseline = root / "tests" / "baselines" / f"{reference_dir.name}.json"
     shown_as = str(baseline.relative_to(root))
     say(f"{board.identifier}: known to {zephyr_version(zephyr)} ({board.platform_file.name}), arch arm")
-    for line in check_fit(board, baseline, shown_as):
-        say(f"memory: {line}")
-    smallest = smallest_models(results.load(baseline))
-    named = " and ".join(dict.fromkeys(smallest.values()))
-    say(f"memory: an estimate from {reference_dir.name}'s build ({shown_as}), the board checked against its "
-        f"smallest model, {named}; ROM can differ a few % on another board, so the real check is this port's "
-        "own run")
+    small = _fit(board, baseline, shown_as, reference_dir.name, root, say)
+    if small is not None:  # the port starts from the small part's folder (its stacks and heap)
+        reference_dir = _reference_folder(small.part, folder, boards)
     _copy_folder(reference_dir, folder, board.identifier, root, say, None if board.emulated else REAL_TODOS)
+    join = join_suite if small is None else join_small_suite
     if board.emulated:
-        join_suite(root, board, say)
+        join(root, board, say)
         say("next: resolve the TODO(port) headers in "
             f"boards/{folder.name}/, then follow the checklist in docs/porting.md:")
         say(f"  scripts/kit compare --board {board.identifier}")
@@ -261,7 +289,7 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
                     "and says so")
             say(f"created: {overlay.relative_to(root)} (no ground link chosen)")
             say(todo)
-    join_suite(root, board, say)
+    join(root, board, say)
     say("next: resolve the TODO(port) headers in "
         f"boards/{folder.name}/ (docs/porting.md, 'A real board'), then:")
     if fetch:

@@ -124,6 +124,51 @@ def join_suite(root: Path, board: ZephyrBoard, say: Callable[[str], None]) -> No
 
 
 
+#: A small board joins only the scenarios of the builds that fit it: these, per suite
+SMALL_SCENARIOS = {"tests/deployment/testcase.yaml": "profile.small.", BUILD_ONLY_SUITE: "board.small."}
+
+
+def add_to_scenario_lists(text: str, prefix: str, identifier: str) -> str:
+    """`identifier` added to the platform lists of every scenario of a
+    twister file whose name starts with `prefix` (the rest as it was); a
+    scenario without a platform_allow list gets one."""
+    scenario = re.compile(rf"^(?P<indent>[ \t]+){re.escape(prefix)}[\w.]*:[ \t]*$")
+    lines = text.splitlines(keepends=True)
+    out: list[str] = []
+    index = 0
+    while index < len(lines):
+        match = scenario.match(lines[index].rstrip("\r\n"))
+        out.append(lines[index])
+        index += 1
+        if match is None:
+            continue
+        body_start = index
+        while index < len(lines) and (not lines[index].strip() or lines[index].lstrip().startswith("#")
+                                      or len(lines[index]) - len(lines[index].lstrip()) > len(match["indent"])):
+            index += 1
+        body = "".join(lines[body_start:index])
+        if "platform_allow:" not in body:
+            body = f"{match['indent']}  platform_allow:\n{match['indent']}    - {identifier}\n" + body
+        out.append(add_to_twister_lists(body, identifier))
+    return "".join(out)
+
+
+def join_small_suite(root: Path, board: ZephyrBoard, say: Callable[[str], None]) -> None:
+    """A small board joins the scenarios of the builds that fit it: for a QEMU
+    board the suite's fprime-small scenarios, for a real board the fprime-small
+    builds of tests/boards."""
+    name = "tests/deployment/testcase.yaml" if board.emulated else BUILD_ONLY_SUITE
+    path, prefix = root / name, SMALL_SCENARIOS[name]
+    before = path.read_text() if path.is_file() else ""
+    if not re.search(rf"^[ \t]+{re.escape(prefix)}", before, re.MULTILINE):
+        raise KitError(f"{name} has no {prefix}* scenario for a small board to join")
+    after = add_to_scenario_lists(before, prefix, board.identifier)
+    if after != before:
+        path.write_text(after)
+    say(f"twister: {board.identifier} {'added to' if after != before else 'already in'} the platform lists of "
+        f"{name}'s {prefix}* scenarios (the builds that fit it)")
+
+
 def allow_module(west_yml: str, module: str) -> str:
     """west.yml with `module` in the zephyr import's name-allowlist (once),
     its comments and layout kept."""

@@ -21,6 +21,7 @@ from kittools.suite import (
     host,
     platforms,
     porting,
+    results,
     shards,
     style,
     twister,
@@ -87,17 +88,29 @@ class FullRun:
         # priority) from the determinism runs on, through the ground link's
         # checks; done before the first budget, which reads them
         self.size_reports: concurrent.futures.Future[None] = concurrent.futures.Future()
+        self._size_reports_lock = threading.Lock()
+        self._size_reports_started = False
 
     def twister(self) -> Tally:
         return twister.run_twister(self.boards + self.small + self.built_only, self.log_dir,
                                    subset=self.args.subset)
 
-    def determinism(self) -> Tally:
+    def start_size_reports(self) -> None:
+        """Once, from the first step that reads twister's runs (the
+        determinism runs, or on a small part alone the ground link's)."""
+        with self._size_reports_lock:
+            if self._size_reports_started:
+                return
+            self._size_reports_started = True
         threading.Thread(target=settle, args=(self.size_reports, functools.partial(
             verdict.make_size_reports, background=True)), daemon=True).start()
+
+    def determinism(self) -> Tally:
+        self.start_size_reports()
         return determinism.check_determinism(self.log_dir, required=not self.subset)
 
     def ground(self) -> Tally:
+        self.start_size_reports()
         self.steps.host_done.wait()
         return ground_checks.run_integration(self.log_dir, required=not self.subset)
 
@@ -105,9 +118,13 @@ class FullRun:
         self.size_reports.result()
         return verdict.check_budget(board, self.log_dir, budget.of_options(self.args), self.args.update_baseline)
 
-    def shard(self, board: str, built: bool) -> Tally:
+    def shard(self, board: str, built: bool, prefix: str = results.BUILD_ONLY_PREFIX) -> Tally:
         self.size_reports.result()
-        return verdict.write_shard(board, self.log_dir, built)
+        return verdict.write_shard(board, self.log_dir, built, prefix)
+
+    def small_report(self, board: str) -> Tally:
+        self.size_reports.result()
+        return verdict.report_small_part(board, self.log_dir, self.args.update_baseline)
 
     def built_report(self, board: str) -> Tally:
         if self.boards:  # their size reports are made beside the determinism runs
@@ -117,13 +134,15 @@ class FullRun:
     def plan(self) -> Plan:
         args, steps, boards, subset = self.args, self.steps, self.boards, self.subset
         if not args.skip_twister:
-            built = f"; built only: {', '.join(self.built_only)}" if self.built_only else ""
+            where = [", ".join(boards)] if boards else []
+            where += [f"small parts, fprime-small: {', '.join(self.small)}"] if self.small else []
+            where += [f"built only: {', '.join(self.built_only)}"] if self.built_only else []
             share = f", twister's share {args.subset}" if subset else ""
-            small = f"; small parts, fprime-small: {', '.join(self.small)}" if self.small else ""
-            steps.add_qemu(f"twister suite under QEMU ({', '.join(boards)}{small}{built}{share})", self.twister)
-            if boards or self.small:  # what reads the runs: none on a board only built
+            steps.add_qemu(f"twister suite under QEMU ({'; '.join(where)}{share})", self.twister)
+            if boards:  # the comparison's builds, played again
                 steps.add_qemu("determinism: twister's binaries run again (size reports in the background)",
                                self.determinism)
+            if boards or self.small:  # what reads the runs: none on a board only built
                 # Before the budget: the board's report takes the serial-load sweep from it
                 steps.add_qemu("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
                                self.ground)
@@ -133,6 +152,13 @@ class FullRun:
                 else:
                     steps.add_qemu(f"budget: {board} results against its baseline",
                                    functools.partial(self.budget, board))
+            for board in self.small:
+                if subset:
+                    steps.add_qemu(f"shard: {board}, small part, this share's part", functools.partial(
+                        self.shard, board, True, results.PROFILE_PREFIX))
+                else:
+                    steps.add_qemu(f"report: {board}, small part (fprime-small)",
+                                   functools.partial(self.small_report, board))
             for board in self.built_only:
                 if subset:
                     steps.add_qemu(f"shard: {board}, built only, this share's part",

@@ -138,21 +138,28 @@ PROFILE_PREFIX = "profile."
 NOT_RUN = "built only: not run on hardware (no emulator); ROM and RAM are the build's, there is no timing"
 
 
-def built_only(twister_out: Path, board: str) -> model.Results:
+#: The conditions of a small part: its builds are played, and judged by twister and the ground link
+SMALL_PART_RUN = ("a small part: the builds that fit it (the fprime-small profile) played every scenario and the "
+                  "ground link, judged there; ROM and RAM are the builds'")
+
+
+def built_only(twister_out: Path, board: str, prefix: str = BUILD_ONLY_PREFIX, run: str = NOT_RUN) -> model.Results:
     """Results of a real board's builds (tests/boards, one per execution
-    model): footprint and ROM/RAM by layer, no records (nothing ran)."""
-    builds = suite_builds(twister_out, board, BUILD_ONLY_PREFIX)
+    model), or with `prefix` PROFILE_PREFIX and `run` SMALL_PART_RUN a small
+    part's (tests/deployment's profile builds, the ones that fit it):
+    footprint and ROM/RAM by layer, no records."""
+    builds = suite_builds(twister_out, board, prefix)
     if not builds:
-        raise KitError(f"twister built nothing of tests/boards on {board} in {twister_out}")
+        raise KitError(f"twister built nothing named {prefix}* on {board} in {twister_out}")
     reports = by_layer.reports([build for _, build in builds])
     variants: dict[str, model.Variant] = {}
     for (_, build), (rom, ram) in zip(builds, reports, strict=True):
         size = measure(build)
-        variants[build.name.removeprefix(BUILD_ONLY_PREFIX)] = model.Variant(
+        variants[build.name.removeprefix(prefix)] = model.Variant(
             passed=False, metrics={model.ROM: size.rom, model.RAM: size.ram}, build=conditions.read(build),
             modules={"rom": by_layer.breakdown(rom), "ram": by_layer.breakdown(ram)},
             footprint={"rom": size.rom, "ram": size.ram, "rom_size": size.rom_size, "ram_size": size.ram_size})
-    return model.Results({"board": builds[0][0], "run": NOT_RUN}, variants)
+    return model.Results({"board": builds[0][0], "run": run}, variants)
 
 
 def integration_logs(log_dir: Path, platform: str, build_name: str) -> Path:

@@ -10,7 +10,7 @@ from pathlib import Path
 from kittools.log import LOG, say
 from kittools.model import Results
 from kittools.sizes import by_layer, sizing, symbols
-from kittools.suite import budget, results, shards
+from kittools.suite import budget, platforms, results, shards
 from kittools.suite.counts import Tally
 from kittools.suite.platforms import TWISTER_OUT
 from kittools.workspace import KIT_ROOT, KitError, check_board
@@ -27,7 +27,9 @@ def make_size_reports(twister_out: Path = TWISTER_OUT, background: bool = False)
     report again and says why."""
     try:
         by_layer.reports([build for _, build in results.suite_builds(twister_out)
-                         + results.suite_builds(twister_out, prefix=results.BUILD_ONLY_PREFIX)],
+                         + results.suite_builds(twister_out, prefix=results.BUILD_ONLY_PREFIX)
+                         + [(p, b) for p, b in results.suite_builds(twister_out, prefix=results.PROFILE_PREFIX)
+                            if platforms.is_small_part(p)]],
                         background=background)
     except KitError:
         pass  # made again, and reported, by the budget step
@@ -94,6 +96,20 @@ def report_built_only(board: str, log_dir: Path) -> Tally:
     return write_built_only(results.built_only(TWISTER_OUT, board), board, log_dir)
 
 
+def report_small_part(board: str, log_dir: Path, update_baseline: bool = False) -> Tally:
+    """A small part's results (the sizes of its fprime-small builds, which
+    twister and the ground link judged) and their report, as a real board's;
+    with `update_baseline` also its baseline, which `kit new-board` reads to
+    estimate what a small board can hold (kittools.boards.memory)."""
+    data = results.built_only(TWISTER_OUT, board, results.PROFILE_PREFIX, results.SMALL_PART_RUN)
+    tally = write_built_only(data, board, log_dir)
+    if update_baseline:
+        path = BASELINES / f"{check_board(board)}.json"
+        write_baseline(data, path)
+        say(f"  {board}: baseline written: {path.relative_to(KIT_ROOT)} (review and commit it)")
+    return tally
+
+
 def write_built_only(data: Results, board: str, log_dir: Path) -> Tally:
     """A real board's results file and report (see report_built_only)."""
     out_dir = log_dir / check_board(board)
@@ -102,19 +118,21 @@ def write_built_only(data: Results, board: str, log_dir: Path) -> Tally:
     from kittools.report import writer  # for the reader; kept out of the budget gate's imports
 
     writer.write(data, out_dir / "report")
-    say(f"  {board}: built only, ROM and RAM by layer: {out_dir / 'report' / 'report.html'}")
+    say(f"  {board}: {data.conditions.get('run', '').split(':')[0]}, ROM and RAM by layer: "
+        f"{out_dir / 'report' / 'report.html'}")
     return Tally(passed=1)
 
 
-def write_shard(board: str, log_dir: Path, built_only: bool = False) -> Tally:
+def write_shard(board: str, log_dir: Path, built_only: bool = False, prefix: str = results.BUILD_ONLY_PREFIX) -> Tally:
     """What this shard of a split run (kit test --subset) made of `board`:
     <log_dir>/<board folder>/shard.json for kit report --merge, which judges
     the board once every shard's parts are joined. One count where the
     shard made anything of the board; none where twister gave it nothing."""
     if built_only:
-        if not results.suite_builds(TWISTER_OUT, board, results.BUILD_ONLY_PREFIX):
+        if not results.suite_builds(TWISTER_OUT, board, prefix):
             return Tally()
-        shard = shards.BoardShard(board, built_only=results.built_only(TWISTER_OUT, board))
+        run = results.NOT_RUN if prefix == results.BUILD_ONLY_PREFIX else results.SMALL_PART_RUN
+        shard = shards.BoardShard(board, built_only=results.built_only(TWISTER_OUT, board, prefix, run))
     else:
         found, floors = results.collect(TWISTER_OUT, board, log_dir)
         if not found and not floors.paths and not floors.zephyr:
