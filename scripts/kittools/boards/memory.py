@@ -86,8 +86,13 @@ class SmallFit:
 
     @property
     def described(self) -> str:
-        profile, _, variant = self.variant.partition(".")
-        return f"{variant} with fprime-{profile}"
+        return _described(self.variant)
+
+
+def _described(variant: str) -> str:
+    """A small part's build as its baseline names it (small.baremetal_passive), in words."""
+    profile, _, model_name = variant.partition(".")
+    return f"{model_name} with fprime-{profile}"
 
 
 def fit_small_part(board: ZephyrBoard, root: Path, parts: list[str]) -> SmallFit | None:
@@ -107,7 +112,7 @@ def fit_small_part(board: ZephyrBoard, root: Path, parts: list[str]) -> SmallFit
     if not fitting:
         return None
     ram, rom, part, variant = fitting[0]
-    lines = [f"{v} (measured on {p}{', the smallest that fits' if (p, v) == (part, variant) else ''}): "
+    lines = [f"{_described(v)} (measured on {p}{', the smallest that fits' if (p, v) == (part, variant) else ''}): "
              f"flash {r_o / 1024:.1f} of {have['flash'] / 1024:.0f} KiB, RAM {r_a / 1024:.1f} of "
              f"{have['RAM'] / 1024:.0f} KiB" for r_a, r_o, p, v in sorted(candidates)]
     return SmallFit(part, variant, lines)

@@ -196,7 +196,7 @@ def _fit(board: ZephyrBoard, baseline: Path, shown_as: str, reference: str, root
         if small is None:
             raise KitError(f"{refused} Nor does the smallest build of a small part (tests/baselines of "
                            "the suite's small parts; docs/porting.md, 'A small part').") from refused
-        say(f"memory: the kit profile does not fit ({refused})")
+        say(f"memory: the kit profile does not fit: {str(refused).split('. Shrink')[0]}")
         for line in small.lines:
             say(f"memory: {line}")
         say(f"memory: the smallest build that passes the suite and fits: {small.described}, as measured on "
@@ -239,8 +239,8 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
         say(f"  scripts/kit compare --board {board.identifier}")
         say(f"  scripts/kit test --board {board.identifier} --update-baseline   (review and commit the baseline)")
         return folder
-    say(f"{board.identifier} is a real board (no emulator in {board.platform_file.name}): built for every model, "
-        "not run")
+    builds = "every model" if small is None else small.described
+    say(f"{board.identifier} is a real board (no emulator in {board.platform_file.name}): built ({builds}), not run")
     (folder / "kit.conf").write_text(with_todo("kit.conf", REAL_KIT_CONF.format(identifier=board.identifier),
                                                reference_dir.name, board.identifier, REAL_TODOS))
     say(f"created: {(folder / 'kit.conf').relative_to(root)} (a real board's: no QEMU icount)")
@@ -296,5 +296,5 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
         say(fetch)
     if todo:
         say(f"  {todo}")
-    say(f"  scripts/kit test --board {board.identifier}   (builds every model; nothing runs)")
+    say(f"  scripts/kit test --board {board.identifier}   (builds {builds}; nothing runs)")
     return folder

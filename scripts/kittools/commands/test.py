@@ -79,7 +79,7 @@ class FullRun:
         self.small = ([b for b in args.board if platforms.is_small_part(b)] if args.board
                       else platforms.small_parts())
         self.built_only = ([b for b in args.board if platforms.is_real_board(b)] if args.board
-                           else platforms.suite_boards(platforms.BUILD_ONLY_SUITE))
+                           else platforms.real_boards())
         check_provisioned()
         self.log_dir = Path(args.output).resolve()
         shards.start(self.log_dir, args.subset)

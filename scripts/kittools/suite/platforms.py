@@ -54,10 +54,17 @@ def is_small_part(board: str) -> bool:
     return any(board == small or board.startswith(small + "/") for small in small_parts())
 
 
+def real_boards() -> list[str]:
+    """The boards the kit builds and does not run (tests/boards): every
+    model on those of its common list, the fprime-small build on a small one
+    (a scenario's list beyond the common one)."""
+    return suite_boards(BUILD_ONLY_SUITE) + small_parts(BUILD_ONLY_SUITE)
+
+
 def is_real_board(board: str) -> bool:
-    """A board the kit builds and does not run (tests/boards), however the
-    board target is spelled (nucleo_f401re, nucleo_f401re/stm32f401xe)."""
-    return check_board(board) in {check_board(real) for real in suite_boards(BUILD_ONLY_SUITE)}
+    """A board of real_boards(), however the board target is spelled
+    (nucleo_f401re, nucleo_f401re/stm32f401xe)."""
+    return check_board(board) in {check_board(real) for real in real_boards()}
 
 
 def check_runs_here(board: str) -> None:
