@@ -165,6 +165,9 @@ class FullRun:
                                    functools.partial(self.shard, board, True))
                 else:
                     steps.add_qemu(f"report: {board}, built only", functools.partial(self.built_report, board))
+            if not subset:
+                steps.add_qemu("report: every board side by side (what fits where)", functools.partial(
+                    verdict.report_side_by_side, boards + self.small + self.built_only, self.log_dir))
         # A split run shares out the steps beside twister: the porting check (the
         # longest) to the first shard, the host's and the device path to the
         # last (measured on two shares of today's suite: the porting check took

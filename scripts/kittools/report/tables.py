@@ -229,3 +229,50 @@ def boards_table(datas: list[Results]) -> Table:
                         [break_text(sw.breaking_point(axis, rg), sw.max_load(axis), sw.unit(axis)) if sw else ""
                          for sw in found])
     return Table("Boards side by side", ["metric"] + [f"{d.board} {v}" for d, v in columns], rows)
+
+
+def _profile_name(variant: str) -> str:
+    """A variant as a results file names it, with its profile in words:
+    small.baremetal_passive (a small part's build) is baremetal_passive with
+    fprime-small; a plain name is the kit profile's."""
+    profile, dot, name = variant.partition(".")
+    return f"{name}, fprime-{profile}" if dot else f"{variant}, kit profile"
+
+
+def fits_table(datas: list[Results]) -> Table | None:
+    """What fits where: every build (model and profile) against every
+    board's memory. A board that built it gives its own ROM and RAM (it
+    linked: it fits); elsewhere the smallest measured build of it is set
+    against the board's flash and RAM (an estimate: ROM differs a few %
+    from board to board). None where no results file gives the memory."""
+    capacity = {}
+    for data in datas:
+        sizes = [v.footprint for v in data.variants.values() if v.footprint.get("rom_size")]
+        if sizes:
+            capacity[data.board] = (sizes[0]["rom_size"], sizes[0]["ram_size"])
+    if len(capacity) < 2:
+        return None
+    builds = list(dict.fromkeys(v for data in datas for v in data.variants))
+    rows: list[list[Any]] = []
+    for build in builds:
+        measured = [(int(d.variants[build].metric(model.ROM) or 0), int(d.variants[build].metric(model.RAM) or 0))
+                    for d in datas if build in d.variants]
+        need_rom, need_ram = min(r for r, _ in measured), min(r for _, r in measured)
+        row: list[Any] = [_profile_name(build)]
+        for data in datas:
+            if data.board not in capacity:
+                continue
+            rom_size, ram_size = capacity[data.board]
+            own = data.variants.get(build)
+            if own is not None:
+                row.append(f"built: ROM {own.metric(model.ROM):,.0f} of {rom_size:,}, "
+                           f"RAM {own.metric(model.RAM):,.0f} of {ram_size:,}")
+                continue
+            short = [f"{what} {need - have:,} B short" for what, need, have in
+                     (("ROM", need_rom, rom_size), ("RAM", need_ram, ram_size)) if need > have]
+            row.append("does not fit: " + ", ".join(short) if short else
+                       f"fits (estimate: ROM {need_rom:,}, RAM {need_ram:,})")
+        rows.append(row)
+    return Table("What fits where (bytes; a build's ROM and RAM where the board built it, else the smallest "
+                 "measured build against the board's memory)", ["build"] + [d.board for d in datas
+                                                                         if d.board in capacity], rows)

@@ -86,6 +86,9 @@ def write_boards(datas: list[Results], out_dir: Path, baseline: Results | None =
     say("report: building tables and plots")
     several = len(datas) > 1
     sections: list[Section] = [tables.boards_table(datas), plots.boards_chart(datas)] if several else []
+    fits = tables.fits_table(datas) if several else None
+    if fits is not None:
+        sections.append(fits)
     violations: list[str] = []
     for index, data in enumerate(datas):
         first = index == 0

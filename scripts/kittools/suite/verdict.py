@@ -150,3 +150,18 @@ def write_baseline(data: Results, path: Path) -> None:
     points the budget holds), not the rest of the console records."""
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(data.to_json(with_records=False), indent=2) + "\n")
+
+
+def report_side_by_side(boards: list[str], log_dir: Path) -> Tally:
+    """Every board's results of this run in one report (<log_dir>/boards/):
+    the boards side by side and what fits where (each build against each
+    board's memory). One count where two or more boards have results."""
+    files = [log_dir / check_board(board) / "results.json" for board in boards]
+    files = [f for f in files if f.is_file()]
+    if len(files) < 2:
+        return Tally()
+    from kittools.report import writer
+
+    writer.write_from_files(files, log_dir / "boards", None, budget.Budget(), lambda _m: None)
+    say(f"  every board side by side, what fits where: {log_dir / 'boards' / 'report.html'}")
+    return Tally(passed=1)
