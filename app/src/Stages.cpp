@@ -6,7 +6,8 @@
 // One instance, marked from the main loop, the watched component's queue
 // and task, and Timing. The marks hand over in dispatch order, each through
 // the queue or the tick that orders the contexts taking them, so no lock is
-// needed. CONFIG_KIT_DISPATCH_STAGES off: every call does nothing.
+// needed. CONFIG_KIT_DISPATCH_STAGES off: every call does nothing, and the
+// probe takes no RAM whether or not the build optimizes at link time.
 // ======================================================================
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
@@ -16,6 +17,8 @@
 
 namespace Kit {
 namespace Stages {
+
+#if defined(CONFIG_KIT_DISPATCH_STAGES)
 
 namespace {
 // Passive rate groups are called in the tick, with no queue to mark
@@ -31,35 +34,28 @@ void watch(const void* object, FwSizeType size) {
 
 bool watches(const void* address) {
     const U8* const at = static_cast<const U8*>(address);
-    return IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES) && at >= s_begin && at < s_end;
+    return at >= s_begin && at < s_end;
 }
 
 void tickTaken(U32 isrStamp) {
-    if (IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES)) {
-        s_stages.begin(isrStamp, TickClock::now());
-    }
+    s_stages.begin(isrStamp, TickClock::now());
 }
 
 void mark(StageMark which) {
-    if (IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES) && s_stages.expects(which)) {
+    if (s_stages.expects(which)) {
         s_stages.mark(which, TickClock::now());
     }
 }
 
 U32 firstMember(U32 now) {
-    return IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES) ? s_stages.end(now) : 0;
+    return s_stages.end(now);
 }
 
 void lastMember() {
-    if (IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES)) {
-        s_stages.settle();
-    }
+    s_stages.settle();
 }
 
 void calibrate(U32 dispatches) {
-    if (!IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES)) {
-        return;
-    }
     // Whole dispatches on the scratch state, through the same calls the run
     // makes (the tick, then every mark); the end, which the run takes after
     // its stamp, is left out of the time
@@ -85,10 +81,50 @@ const DispatchStages& stages() {
 }
 
 void reset() {
-    if (IS_ENABLED(CONFIG_KIT_DISPATCH_STAGES)) {
-        s_stages.reset();
-    }
+    s_stages.reset();
 }
+
+#else  // CONFIG_KIT_DISPATCH_STAGES off: every call does nothing, and no probe is linked
+
+void watch(const void* object, FwSizeType size) {
+    (void)object;
+    (void)size;
+}
+
+bool watches(const void* address) {
+    (void)address;
+    return false;
+}
+
+void tickTaken(U32 isrStamp) {
+    (void)isrStamp;
+}
+
+void mark(StageMark which) {
+    (void)which;
+}
+
+U32 firstMember(U32 now) {
+    (void)now;
+    return 0;
+}
+
+void lastMember() {}
+
+void calibrate(U32 dispatches) {
+    (void)dispatches;
+}
+
+const DispatchStages& stages() {
+    // Never read without the probe (Report checks the option first); an
+    // empty one, constant-initialized, where a caller does
+    static const DispatchStages none;
+    return none;
+}
+
+void reset() {}
+
+#endif
 
 }  // namespace Stages
 }  // namespace Kit

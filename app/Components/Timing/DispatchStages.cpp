@@ -24,6 +24,8 @@ const char* const DIRECT_STAGE_NAMES[2] = {
 };
 }  // namespace
 
+DispatchStages::DispatchStages(bool direct) : m_marks(direct ? 1 : MARKS) {}
+
 const char* DispatchStages::stageName(U32 stage) const {
     FW_ASSERT(stage < this->stageCount(), static_cast<FwAssertArgType>(stage));
     return m_marks == MARKS ? STAGE_NAMES[stage] : DIRECT_STAGE_NAMES[stage];

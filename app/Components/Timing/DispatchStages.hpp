@@ -52,9 +52,7 @@ class DispatchStages {
 
     //! `direct`: the group is called in the tick (passive), its path the
     //! tick taken and the first member; otherwise every mark, through its queue
-    // constexpr: a global instance needs no start-up code, so a build that
-    // never uses it (CONFIG_KIT_DISPATCH_STAGES=n) links none of its RAM
-    constexpr explicit DispatchStages(bool direct = false) : m_marks(direct ? 1 : MARKS) {}
+    explicit DispatchStages(bool direct = false);
 
     //! Marks on this group's path (MARKS, or 1 when direct) and the stages between them
     U32 marks() const { return m_marks; }
