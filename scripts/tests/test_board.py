@@ -670,6 +670,7 @@ def test_a_board_the_kit_profile_does_not_fit_takes_the_small_parts_build_that_f
     suite = (root / "tests" / "deployment" / "testcase.yaml").read_text()
     assert suite.count("qemu_g0") == 1
     assert suite.index("qemu_g0") > suite.index("profile.small.baremetal_passive")
+    assert "kit compare" not in text  # a small part has nothing to compare
 
 
 def test_a_board_too_small_for_the_small_part_too_is_refused(tmp_path):

@@ -75,7 +75,6 @@ def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -
     return lines
 
 
-
 @dataclass(frozen=True)
 class SmallFit:
     """The smallest build of a small part (its baseline: the fprime-small

@@ -236,7 +236,8 @@ def new_board(target: str, reference: str = REFERENCE_BOARD, force: bool = False
         join(root, board, say)
         say("next: resolve the TODO(port) headers in "
             f"boards/{folder.name}/, then follow the checklist in docs/porting.md:")
-        say(f"  scripts/kit compare --board {board.identifier}")
+        if small is None:  # a small part has no comparison: the fprime-small build's scenarios and link
+            say(f"  scripts/kit compare --board {board.identifier}")
         say(f"  scripts/kit test --board {board.identifier} --update-baseline   (review and commit the baseline)")
         return folder
     builds = "every model" if small is None else small.described
