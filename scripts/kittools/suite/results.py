@@ -143,11 +143,12 @@ SMALL_PART_RUN = ("a small part: the builds that fit it (the fprime-small profil
                   "ground link, judged there; ROM and RAM are the builds'")
 
 
-def built_only(twister_out: Path, board: str, prefix: str = BUILD_ONLY_PREFIX, run: str = NOT_RUN) -> model.Results:
+def built_only(twister_out: Path, board: str, prefix: str = BUILD_ONLY_PREFIX) -> model.Results:
     """Results of a real board's builds (tests/boards, one per execution
-    model), or with `prefix` PROFILE_PREFIX and `run` SMALL_PART_RUN a small
-    part's (tests/deployment's profile builds, the ones that fit it):
-    footprint and ROM/RAM by layer, no records."""
+    model), or with `prefix` PROFILE_PREFIX a small part's (tests/deployment's
+    profile builds, the ones that fit it, played): footprint and ROM/RAM by
+    layer, no records."""
+    run = NOT_RUN if prefix == BUILD_ONLY_PREFIX else SMALL_PART_RUN
     builds = suite_builds(twister_out, board, prefix)
     if not builds:
         raise KitError(f"twister built nothing named {prefix}* on {board} in {twister_out}")

@@ -101,7 +101,7 @@ def report_small_part(board: str, log_dir: Path, update_baseline: bool = False) 
     twister and the ground link judged) and their report, as a real board's;
     with `update_baseline` also its baseline, which `kit new-board` reads to
     estimate what a small board can hold (kittools.boards.memory)."""
-    data = results.built_only(TWISTER_OUT, board, results.PROFILE_PREFIX, results.SMALL_PART_RUN)
+    data = results.built_only(TWISTER_OUT, board, results.PROFILE_PREFIX)
     tally = write_built_only(data, board, log_dir)
     if update_baseline:
         path = BASELINES / f"{check_board(board)}.json"
@@ -131,8 +131,7 @@ def write_shard(board: str, log_dir: Path, built_only: bool = False, prefix: str
     if built_only:
         if not results.suite_builds(TWISTER_OUT, board, prefix):
             return Tally()
-        run = results.NOT_RUN if prefix == results.BUILD_ONLY_PREFIX else results.SMALL_PART_RUN
-        shard = shards.BoardShard(board, built_only=results.built_only(TWISTER_OUT, board, prefix, run))
+        shard = shards.BoardShard(board, built_only=results.built_only(TWISTER_OUT, board, prefix))
     else:
         found, floors = results.collect(TWISTER_OUT, board, log_dir)
         if not found and not floors.paths and not floors.zephyr:
