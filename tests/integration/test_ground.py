@@ -3,9 +3,10 @@
 fprime-gds, against a build of the ground scenario (kit test boots each one,
 with fprime-gds on its link: kittools/link/ground.py).
 
-QEMU runs in virtual time (icount, sleep=off: idle time is skipped), so
-rates are checked on the F´ time tags the deployment puts on its telemetry,
-never on the host's clock.
+QEMU counts instructions (icount); the station runs it in real time (idle
+time in host time: GroundStation says why), but host and deployment clocks
+still drift, so rates are checked on the F´ time tags the deployment puts
+on its telemetry, never on the host's clock.
 """
 
 from __future__ import annotations

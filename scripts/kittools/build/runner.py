@@ -15,6 +15,8 @@ from kittools.build.folder import BuildFolder
 from kittools.workspace import KIT_ROOT, KitError, environment
 
 RUN_TIMEOUT_S = 180.0
+#: What asks scripts/kit-qemu (the QEMU of the kit's QEMU boards) for real time
+REALTIME = "KIT_QEMU_REALTIME"
 
 
 def _tail(text: str, lines: int = 25) -> str:
@@ -85,10 +87,13 @@ class Qemu:
     """The build's `run` target (QEMU) in the background, its console read
     line by line from the build's QEMU pipe (a twister build) or from stdio.
     A build that asks for its scenario at boot is answered `scenario` at its
-    prompt (None: left to whoever writes to the console, send()). A context
-    manager: leaving it stops QEMU (its whole process group)."""
+    prompt (None: left to whoever writes to the console, send()).
+    `realtime`: virtual time keeps to the host's while the guest idles
+    (scripts/kit-qemu, KIT_QEMU_REALTIME: a ground station's runs; every
+    other run skips idle time). A context manager: leaving it stops QEMU
+    (its whole process group)."""
 
-    def __init__(self, build_dir: Path, scenario: str | None = "nominal") -> None:
+    def __init__(self, build_dir: Path, scenario: str | None = "nominal", realtime: bool = False) -> None:
         self.build_dir = build_dir
         self.lines: list[str] = []
         self._partial = b""
@@ -96,7 +101,7 @@ class Qemu:
         pipe = qemu_pipe(build_dir)
         self._pipe_fds = _open_pipe(pipe) if pipe is not None else None
         self._process = subprocess.Popen(
-            run_command(build_dir), cwd=KIT_ROOT, env=environment(),
+            run_command(build_dir), cwd=KIT_ROOT, env={**environment(), REALTIME: "1" if realtime else "0"},
             stdin=subprocess.PIPE if self._pipe_fds is None else subprocess.DEVNULL,
             stdout=subprocess.DEVNULL if self._pipe_fds else subprocess.PIPE, stderr=subprocess.STDOUT,
             start_new_session=True)

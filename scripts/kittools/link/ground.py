@@ -67,13 +67,15 @@ def link_of(build_dir: Path, dictionary: Path | None = None) -> Link:
     return Link(build_dir, Path(socket_path), dictionary, folder.cache_value("KIT_BOARD_TARGET") or "")
 
 
-def boot(link: Link) -> Qemu:
+def boot(link: Link, realtime: bool = False) -> Qemu:
     """Boot a link's build in QEMU and wait for its LINK line; refuse a
     dictionary that is not the one the firmware was built with (a GDS would
     decode its packets as some other build's events and channels). On any
-    error QEMU is stopped."""
+    error QEMU is stopped. `realtime`: idle time in host time (a station:
+    GroundStation says why); the raw link's checks pace on the deployment's
+    own answers and clock, and skip it."""
     _check_socket_free(link.socket)
-    qemu = Qemu(link.build_dir, "ground")
+    qemu = Qemu(link.build_dir, "ground", realtime=realtime)
     try:
         qemu.read_until(lambda line: line.startswith(LINK_READY) or ends_run(line), BOOT_TIMEOUT_S)
         if not any(line.startswith(LINK_READY) for line in qemu.lines):
@@ -141,7 +143,14 @@ def _check_port_free(port: int) -> None:
 
 
 class GroundStation:
-    """QEMU running a build, and fprime-gds connected to its link."""
+    """QEMU running a build, and fprime-gds connected to its link. QEMU
+    runs in real time (virtual time keeps to the host's while the deployment
+    idles), as the deployment would beside a real ground station: skipping
+    idle time, a deployment that idles most of a second sent three to four
+    seconds of telemetry per host second, fprime-gds on the same cores fell
+    behind, and the commands it sent reached the deployment late (a fresh
+    clone's full run on the small part: each one a command behind, its
+    tests timed out)."""
 
     def __init__(self, build_dir: Path, logs: Path, gui: bool = False, gui_port: int = 5000,
                  dictionary: Path | None = None) -> None:
@@ -182,7 +191,7 @@ class GroundStation:
         if self.gui:
             _check_port_free(self.gui_port)
         self.logs.mkdir(parents=True, exist_ok=True)
-        self.qemu = boot(self.link)
+        self.qemu = boot(self.link, realtime=True)
         command = [
             "fprime-gds", "--no-app", "--dictionary", str(self.link.dictionary),
             "--communication-selection", "kit-unix", "--kit-socket", str(self.link.socket),

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
-"""scripts/qemu-one-core, the QEMU of the kit's QEMU boards: each run takes
-a host CPU no other holds, until it exits; with none left it runs unpinned;
-it runs the command it is given, status and all."""
+"""scripts/kit-qemu, the QEMU of the kit's QEMU boards: each run takes a
+host CPU no other holds, until it exits; with none left it runs unpinned;
+it runs the command it is given, status and all; asked for real time, it
+turns icount's sleep on."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ import pytest
 
 from kittools.workspace import KIT_ROOT
 
-WRAPPER = KIT_ROOT / "scripts" / "qemu-one-core"
+WRAPPER = KIT_ROOT / "scripts" / "kit-qemu"
 # Stands in for QEMU: prints the CPUs it may run on, then waits for its stdin to close
 SHOW_AFFINITY = "import os, sys; print(sorted(os.sched_getaffinity(0)), flush=True); sys.stdin.read()"
 CPUS = sorted(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else []
@@ -58,4 +59,28 @@ def test_a_missing_qemu_is_one_error(tmp_path: Path) -> None:
     done = subprocess.run([str(WRAPPER), str(tmp_path / "qemu-system-none")], capture_output=True, text=True)
     assert done.returncode == 1
     missing = tmp_path / "qemu-system-none"
-    assert done.stderr == f"qemu-one-core: error: cannot run {missing}: No such file or directory\n"
+    assert done.stderr == f"kit-qemu: error: cannot run {missing}: No such file or directory\n"
+
+
+ICOUNT = ["-icount", "shift=4,align=off,sleep=off", "-rtc", "clock=vm"]
+SHOW_ARGUMENTS = "import sys; print(sys.argv[1:])"
+
+
+@pytest.mark.parametrize(("realtime", "expected"), [
+    (None, "shift=4,align=off,sleep=off"),
+    ("1", "shift=4,align=off,sleep=on"),
+    ("0", "shift=4,align=off,sleep=off"),
+])
+def test_real_time_turns_icount_sleep_on_when_asked(tmp_path: Path, realtime: str | None, expected: str) -> None:
+    env = {key: value for key, value in os.environ.items() if key != "KIT_QEMU_REALTIME"}
+    if realtime is not None:
+        env["KIT_QEMU_REALTIME"] = realtime
+    done = subprocess.run([str(WRAPPER), sys.executable, "-c", SHOW_ARGUMENTS, *ICOUNT], capture_output=True,
+                          text=True, env={**env, "TMPDIR": str(tmp_path)}, check=True)
+    assert done.stdout == f"{['-icount', expected, '-rtc', 'clock=vm']}\n"
+
+
+def test_real_time_leaves_a_run_without_icount_as_it_is(tmp_path: Path) -> None:
+    done = subprocess.run([str(WRAPPER), sys.executable, "-c", SHOW_ARGUMENTS, "-icount"], capture_output=True,
+                          text=True, env={**os.environ, "KIT_QEMU_REALTIME": "1", "TMPDIR": str(tmp_path)}, check=True)
+    assert done.stdout == "['-icount']\n"
