@@ -283,7 +283,9 @@ def test_the_scaffold_refuses_to_overwrite_a_port_unless_forced(tmp_path):
     boards.new_board("mps2/an385", root=root, zephyr=zephyr, force=True, say=_quiet)
     assert "CONFIG_QEMU_ICOUNT_SHIFT=4" in (folder / "kit.conf").read_text()
     suite = (root / "tests" / "deployment" / "testcase.yaml").read_text()
-    assert suite.count("mps2/an385") == 5  # the second run added nothing
+    # its three platform_allow lists (the deployment suite adds no integration
+    # platform: boards/suites.py exclude_from_scenarios); the second run added nothing
+    assert suite.count("mps2/an385") == 3
 
 
 def test_scaffolding_from_an_unresolved_port_does_not_stack_headers(tmp_path):
@@ -685,3 +687,29 @@ def test_a_small_real_board_joins_the_small_builds_of_the_real_boards():
     assert after == text.replace("  board.small.baremetal_passive:\n",
                                  "  board.small.baremetal_passive:\n    platform_allow:\n      - nucleo_g071rb\n")
     assert boards.add_to_scenario_lists(after, "board.small.", "nucleo_g071rb") == after  # once
+
+
+def test_a_board_of_the_kit_profile_is_kept_out_of_the_small_parts_builds(tmp_path):
+    # Twister joins the common list to a scenario's: a board of the kit
+    # profile joins every list but the fprime-small builds', which exclude it
+    root = _kit(tmp_path)
+    (root / "tests" / "deployment" / "testcase.yaml").write_text(SMALL_SUITE)
+    boards.new_board("mps2/an521/cpu0", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
+    suite = (root / "tests" / "deployment" / "testcase.yaml").read_text()
+    assert suite.endswith("  profile.small.baremetal_passive:\n    platform_exclude:\n      - mps2/an521/cpu0\n"
+                          "    platform_allow:\n      - qemu_cortex_m3\n      - qemu_cortex_m3_small\n"
+                          "    extra_args: SNIPPET=fprime-small\n")
+    head = suite[:suite.index("  profile.small.")]
+    # every other platform_allow list, as before; no integration list (twister:
+    # an excluded integration platform is an error)
+    assert head == boards.add_to_twister_lists(SUITE, "mps2/an521/cpu0", ("platform_allow",))
+
+
+def test_exclusion_from_the_small_builds_is_made_once_and_kept_in_an_existing_list():
+    text = BOARDS_SUITE + ("  board.small.baremetal_passive:\n    platform_allow:\n      - nucleo_g071rb\n"
+                           "    platform_exclude:\n      - nucleo_other\n")
+    after = boards.exclude_from_scenarios(text, "board.small.", "nucleo_new")
+    common = "    - nucleo_other\n  build_only"
+    assert after == text.replace(common, "    - nucleo_other\n    - nucleo_new\n  build_only").replace(
+        "      - nucleo_other\n", "      - nucleo_other\n      - nucleo_new\n")
+    assert boards.exclude_from_scenarios(after, "board.small.", "nucleo_new") == after

@@ -28,6 +28,7 @@ from kittools.boards.suites import (
     add_to_scenario_lists,
     add_to_twister_lists,
     allow_module,
+    exclude_from_scenarios,
     suite_files,
     twister_files,
 )
@@ -41,6 +42,7 @@ __all__ = [
     "SpareUart",
     "ZephyrBoard",
     "add_to_scenario_lists",
+    "exclude_from_scenarios",
     "add_to_twister_lists",
     "allow_module",
     "check_arch",

@@ -46,11 +46,12 @@ def _add_inline(rest: str, identifier: str) -> str:
     return f"{lead}{core}{trail}{hash_sign}{comment}"
 
 
-def add_to_twister_lists(text: str, identifier: str) -> str:
-    """`identifier` added once to every platform_allow / integration_platforms
-    list of a twister file, editing the text so its comments and layout stay:
-    a `- identifier` line after the list's last item, at its indentation."""
-    key = re.compile(rf"^(?P<indent>[ \t]*)(?:{'|'.join(TWISTER_LIST_KEYS)}):(?P<rest>.*?)(?P<eol>\r?\n?)$")
+def add_to_twister_lists(text: str, identifier: str, keys: tuple[str, ...] = TWISTER_LIST_KEYS) -> str:
+    """`identifier` added once to every list of `keys` (platform_allow and
+    integration_platforms) of a twister file, editing the text so its
+    comments and layout stay: a `- identifier` line after the list's last
+    item, at its indentation."""
+    key = re.compile(rf"^(?P<indent>[ \t]*)(?:{'|'.join(keys)}):(?P<rest>.*?)(?P<eol>\r?\n?)$")
     lines = text.splitlines(keepends=True)
     out: list[str] = []
     index = 0
@@ -109,48 +110,83 @@ def suite_files(root: Path, emulated: bool) -> list[Path]:
 
 
 def join_suite(root: Path, board: ZephyrBoard, say: Callable[[str], None]) -> None:
+    """A board that takes the kit profile joins every platform list of its
+    suites but the small builds' (SMALL_SCENARIOS), which exclude it: twister
+    joins a scenario's list to the common one, and the fprime-small builds
+    are for the small parts."""
     identifier = board.identifier
     for path in suite_files(root, board.emulated):
         if not path.is_file():
             raise KitError(f"{path.relative_to(root)} is missing: a real board joins its platform list")
         before = path.read_text()
-        after = add_to_twister_lists(before, identifier)
         name = path.relative_to(root)
+        prefix = SMALL_SCENARIOS.get(name.as_posix())
+        if prefix is None:
+            after = add_to_twister_lists(before, identifier)
+        else:
+            after = exclude_from_scenarios(before, prefix, identifier)
         if after != before:
             path.write_text(after)
-            say(f"twister: added {identifier} to the platform lists of {name}")
+            say(f"twister: added {identifier} to the platform lists of {name}"
+                + (f" (excluded from its {prefix}* scenarios: the small parts' builds)" if prefix else ""))
         else:
             say(f"twister: {name} unchanged (its lists name {identifier} already, or it has none)")
-
 
 
 #: A small board joins only the scenarios of the builds that fit it: these, per suite
 SMALL_SCENARIOS = {"tests/deployment/testcase.yaml": "profile.small.", BUILD_ONLY_SUITE: "board.small."}
 
 
-def add_to_scenario_lists(text: str, prefix: str, identifier: str) -> str:
-    """`identifier` added to the platform lists of every scenario of a
-    twister file whose name starts with `prefix` (the rest as it was); a
-    scenario without a platform_allow list gets one."""
+def _edit_scenarios(text: str, prefix: str, edit: Callable[[str, str], str],
+                    outside: Callable[[str], str] = lambda rest: rest) -> str:
+    """A twister file with `edit(body, indent)` applied to the body of every
+    scenario whose name starts with `prefix` (indent: the name's), and
+    `outside` to the text between."""
     scenario = re.compile(rf"^(?P<indent>[ \t]+){re.escape(prefix)}[\w.]*:[ \t]*$")
     lines = text.splitlines(keepends=True)
     out: list[str] = []
+    between: list[str] = []
     index = 0
     while index < len(lines):
         match = scenario.match(lines[index].rstrip("\r\n"))
-        out.append(lines[index])
+        between.append(lines[index])
         index += 1
         if match is None:
             continue
+        out.append(outside("".join(between)))
+        between = []
         body_start = index
         while index < len(lines) and (not lines[index].strip() or lines[index].lstrip().startswith("#")
                                       or len(lines[index]) - len(lines[index].lstrip()) > len(match["indent"])):
             index += 1
-        body = "".join(lines[body_start:index])
-        if "platform_allow:" not in body:
-            body = f"{match['indent']}  platform_allow:\n{match['indent']}    - {identifier}\n" + body
-        out.append(add_to_twister_lists(body, identifier))
+        out.append(edit("".join(lines[body_start:index]), match["indent"]))
+    out.append(outside("".join(between)))
     return "".join(out)
+
+
+def _with_list(body: str, indent: str, key: str, identifier: str) -> str:
+    """A scenario's body with `identifier` in its `key` list (made first in
+    the body if it has none)."""
+    if f"{key}:" not in body:
+        body = f"{indent}  {key}:\n{indent}    - {identifier}\n" + body
+    return add_to_twister_lists(body, identifier, (key,) if key not in TWISTER_LIST_KEYS else TWISTER_LIST_KEYS)
+
+
+def add_to_scenario_lists(text: str, prefix: str, identifier: str) -> str:
+    """`identifier` added to the platform lists of every scenario of a
+    twister file whose name starts with `prefix` (the rest as it was); a
+    scenario without a platform_allow list gets one."""
+    return _edit_scenarios(text, prefix, lambda body, indent: _with_list(body, indent, "platform_allow", identifier))
+
+
+def exclude_from_scenarios(text: str, prefix: str, identifier: str) -> str:
+    """`identifier` added to the platform_allow lists of a twister file but
+    those of its scenarios whose name starts with `prefix`, which exclude it
+    (platform_exclude, made where missing). Not to integration_platforms:
+    twister joins the common list to each scenario's, and a platform a
+    scenario excludes but lists for integration is an error to twister."""
+    return _edit_scenarios(text, prefix, lambda body, indent: _with_list(body, indent, "platform_exclude", identifier),
+                           outside=lambda rest: add_to_twister_lists(rest, identifier, ("platform_allow",)))
 
 
 def join_small_suite(root: Path, board: ZephyrBoard, say: Callable[[str], None]) -> None:
