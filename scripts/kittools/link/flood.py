@@ -136,13 +136,18 @@ def run(build: Path) -> Outcome:
                 raise KitError(f"{build}: no downlink within {REPLY_TIMEOUT_S:.0f} s")
             before = settled_counts(link, link.now + SETTLE_S, "boot")
             _flood(link, qemu, opcodes, outcome)
-            # The UART driver's ring drains before the NO_OPs
             # Every byte of the flood read by the UART (QEMU may still be
             # handing it over after the noise stopped), then the UART
-            # driver's ring drained, before the NO_OPs
+            # driver's ring drained, before the NO_OPs: REQUEST_QUIET_S of
+            # the deployment's time past the sample that showed them read
+            # (measured from that sample: each new one moves the heartbeat's
+            # time, and a wait on the newest never ended but by time-out,
+            # 30 s of every flood)
             settled = settled_counts(link, link.now + SETTLE_S, "the noise")
-            link.pump(lambda: link.now >= link.telemetry_time[HEARTBEAT_CHANNEL] + REQUEST_QUIET_S,
-                      REPLY_TIMEOUT_S)
+            quiet_until = link.telemetry_time[HEARTBEAT_CHANNEL] + REQUEST_QUIET_S
+            if not link.pump(lambda: link.now >= quiet_until, REPLY_TIMEOUT_S):
+                raise KitError(f"{build}: the deployment's clock did not move {REQUEST_QUIET_S} s past the flood "
+                               f"in {REPLY_TIMEOUT_S:.0f} s")
             outcome.noop_bytes = len(noop)
             missed = 0
             for _ in range(FLOOD_NOOPS):
