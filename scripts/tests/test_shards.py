@@ -19,10 +19,10 @@ from sample_console import console_log
 BOARD = "qemu_cortex_m3"
 
 
-def _played(variant: str, rom: int) -> results.Played:
+def _played(variant: str, rom: int, board: str = BOARD) -> results.Played:
     run = console.parse(console_log(variant))
     link = [console.Record("SERIAL", {"axis": "uplink", "level": "50", "delivered": "100"})]
-    return results.Played(BOARD, variant, Footprint(rom, 20_000, 262_144, 65_536), run.records, link,
+    return results.Played(board, variant, Footprint(rom, 20_000, 262_144, 65_536), run.records, link,
                           {"app": rom // 2}, {"app": 9_000}, {"CONFIG_KIT_MODEL": variant},
                           {"rom": {"main": 100}}, {"tables": []})
 
@@ -75,3 +75,25 @@ def test_a_new_run_leaves_no_earlier_shard_behind(tmp_path: Path) -> None:
     (folder,) = _write_split(tmp_path, [[_played("rtos", 1)]], floor_in=1)
     shards.start(folder, None)  # a full run into the same folder
     assert not list(folder.glob(f"*/{shards.SHARD_FILE}")) and not (folder / shards.SUBSET_FILE).exists()
+
+
+def test_the_merge_ends_with_every_board_side_by_side(tmp_path: Path) -> None:
+    # As a single run ends: <output>/boards/, once two boards have results
+    import argparse
+
+    from kittools.commands import report
+
+    dirs = []
+    for k, board in enumerate(("nucleo_f401re", "nucleo_g071rb"), start=1):
+        folder = tmp_path / f"shard{k}"
+        shards.start(folder, f"{k}/2")
+        built = results.assemble([_played("baremetal", 140_000 + k, board)], results.Floors(), board)
+        shards.write(shards.BoardShard(board, built_only=built), folder)
+        dirs.append(str(folder))
+    out = tmp_path / "merged"
+    args = argparse.Namespace(merge=dirs, results=None, baseline=None, output=str(out))
+    assert report.run(args) == 0
+    assert (out / "nucleo_f401re" / "results.json").is_file() and (out / "nucleo_g071rb" / "results.json").is_file()
+    side_by_side = (out / "boards" / "report.md").read_text()
+    header = side_by_side.split("## Boards side by side\n\n", 1)[1].splitlines()[0]
+    assert header.count("baremetal") == 2  # a column per board's build

@@ -37,7 +37,8 @@ def run(args: argparse.Namespace) -> int:
 def merge(args: argparse.Namespace) -> int:
     """kit report --merge DIR...: the shards of one split run (kit test
     --subset K/N, each K once) joined per board into its results file and
-    report, judged against its baseline as a single run is."""
+    report, judged against its baseline as a single run is; then every
+    board side by side (<output>/boards/), as a single run writes it."""
     if args.results or args.baseline:
         raise KitError("--merge takes the shards' output folders only: each board is judged against its "
                        "baseline in tests/baselines")
@@ -50,5 +51,7 @@ def merge(args: argparse.Namespace) -> int:
             total.add(verdict.write_built_only(data, board, out_dir))
         else:
             total.add(verdict.judge(data, board, out_dir, budget.of_options(args)))
+    # ... and every board side by side, as a single run ends
+    total.add(verdict.report_side_by_side(sorted(joined), out_dir))
     print(f"total: {total.passed} passed, {total.failed} failed")
     return 0 if total.failed == 0 and total.passed > 0 else 1
