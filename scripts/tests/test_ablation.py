@@ -80,3 +80,14 @@ def test_a_knob_filter_keeps_the_profile_and_the_knobs_it_names():
     assert [k.name for k in ablation.chosen(plan, ["stack"])] == ["profile", "-fconserve-stack: on -> off"]
     with pytest.raises(KitError, match="no knob matches 'nothing'; the knobs are: asserts: none; link-time"):
         ablation.chosen(plan, ["nothing"])
+
+
+def test_a_knob_kconfig_did_not_take_is_named_with_what_it_got():
+    # Kconfig keeps a value a symbol's dependencies or another default force,
+    # and only warns: such a build is the profile again, not the knob
+    config = {"CONFIG_LTO": "y", "CONFIG_COMPILER_OPT": "", "CONFIG_SPEED_OPTIMIZATIONS": "y"}
+    assert ablation.not_taken(("CONFIG_LTO=n", "CONFIG_ISR_TABLES_LOCAL_DECLARATION=n"), config) == [
+        "CONFIG_LTO=n (got y)"]
+    assert ablation.not_taken(('CONFIG_COMPILER_OPT=""', "CONFIG_SPEED_OPTIMIZATIONS=y"), config) == []
+    assert ablation.not_taken(('CONFIG_COMPILER_OPT="-fconserve-stack"',), config) == [
+        'CONFIG_COMPILER_OPT="-fconserve-stack" (got )']

@@ -189,7 +189,12 @@ def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) 
     build_dir = out_dir / slug
     row = Row(knob.name, list(knob.settings), built=_build(board, variant, profile, knob.settings, build_dir,
                                                             out_dir / f"{slug}.build.log"))
-    if row.built:
+    refused = not_taken(knob.settings, BuildFolder(build_dir).kconfig(missing_ok=True)) if row.built else []
+    if refused:
+        # Measured, it would be the profile again under the knob's name
+        row.built = False
+        row.note = f"Kconfig did not take {'; '.join(refused)}"
+    elif row.built:
         footprint = measure(build_dir)
         row.rom, row.ram = footprint.rom, footprint.ram
         row.rom_layers = by_layer.breakdown(by_layer.report(build_dir, "rom"))
@@ -205,6 +210,20 @@ def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) 
         row.note = build_failure(out_dir / f"{slug}.build.log")
     row.seconds = time.monotonic() - started
     return row
+
+
+def not_taken(settings: tuple[str, ...], config: dict[str, str]) -> list[str]:
+    """The settings a build's .config does not hold as given (Kconfig
+    overrides an assignment a symbol's dependencies or another default
+    forbid, and only warns), each with the value it got."""
+    refused = []
+    for setting in settings:
+        key, _, given = setting.partition("=")
+        wanted = given.strip('"')  # as .config's reading gives a string
+        got = config.get(key, "n")
+        if got != wanted and not (wanted == "n" and key not in config):
+            refused.append(f"{setting} (got {got})")
+    return refused
 
 
 def chosen(plan: list[Knob], only: list[str]) -> list[Knob]:
