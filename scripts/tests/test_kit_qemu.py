@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 
+from kittools.build.runner import REALTIME
 from kittools.workspace import KIT_ROOT
 
 WRAPPER = KIT_ROOT / "scripts" / "kit-qemu"
@@ -72,9 +73,10 @@ SHOW_ARGUMENTS = "import sys; print(sys.argv[1:])"
     ("0", "shift=4,align=off,sleep=off"),
 ])
 def test_real_time_turns_icount_sleep_on_when_asked(tmp_path: Path, realtime: str | None, expected: str) -> None:
-    env = {key: value for key, value in os.environ.items() if key != "KIT_QEMU_REALTIME"}
+    # REALTIME: the name the kit's runner sets, so the two cannot drift apart
+    env = {key: value for key, value in os.environ.items() if key != REALTIME}
     if realtime is not None:
-        env["KIT_QEMU_REALTIME"] = realtime
+        env[REALTIME] = realtime
     done = subprocess.run([str(WRAPPER), sys.executable, "-c", SHOW_ARGUMENTS, *ICOUNT], capture_output=True,
                           text=True, env={**env, "TMPDIR": str(tmp_path)}, check=True)
     assert done.stdout == f"{['-icount', expected, '-rtc', 'clock=vm']}\n"
@@ -82,5 +84,5 @@ def test_real_time_turns_icount_sleep_on_when_asked(tmp_path: Path, realtime: st
 
 def test_real_time_leaves_a_run_without_icount_as_it_is(tmp_path: Path) -> None:
     done = subprocess.run([str(WRAPPER), sys.executable, "-c", SHOW_ARGUMENTS, "-icount"], capture_output=True,
-                          text=True, env={**os.environ, "KIT_QEMU_REALTIME": "1", "TMPDIR": str(tmp_path)}, check=True)
+                          text=True, env={**os.environ, REALTIME: "1", "TMPDIR": str(tmp_path)}, check=True)
     assert done.stdout == "['-icount']\n"

@@ -164,19 +164,20 @@ def _edit_scenarios(text: str, prefix: str, edit: Callable[[str, str], str],
     return "".join(out)
 
 
-def _with_list(body: str, indent: str, key: str, identifier: str) -> str:
-    """A scenario's body with `identifier` in its `key` list (made first in
-    the body if it has none)."""
+def _with_list(body: str, indent: str, key: str, identifier: str, keys: tuple[str, ...]) -> str:
+    """A scenario's body with `identifier` in its lists of `keys`, its `key`
+    list made first in the body if it has none."""
     if f"{key}:" not in body:
         body = f"{indent}  {key}:\n{indent}    - {identifier}\n" + body
-    return add_to_twister_lists(body, identifier, (key,) if key not in TWISTER_LIST_KEYS else TWISTER_LIST_KEYS)
+    return add_to_twister_lists(body, identifier, keys)
 
 
 def add_to_scenario_lists(text: str, prefix: str, identifier: str) -> str:
     """`identifier` added to the platform lists of every scenario of a
     twister file whose name starts with `prefix` (the rest as it was); a
     scenario without a platform_allow list gets one."""
-    return _edit_scenarios(text, prefix, lambda body, indent: _with_list(body, indent, "platform_allow", identifier))
+    return _edit_scenarios(text, prefix, lambda body, indent: _with_list(body, indent, "platform_allow", identifier,
+                                                                             TWISTER_LIST_KEYS))
 
 
 def exclude_from_scenarios(text: str, prefix: str, identifier: str) -> str:
@@ -185,7 +186,9 @@ def exclude_from_scenarios(text: str, prefix: str, identifier: str) -> str:
     (platform_exclude, made where missing). Not to integration_platforms:
     twister joins the common list to each scenario's, and a platform a
     scenario excludes but lists for integration is an error to twister."""
-    return _edit_scenarios(text, prefix, lambda body, indent: _with_list(body, indent, "platform_exclude", identifier),
+    return _edit_scenarios(text, prefix,
+                           lambda body, indent: _with_list(body, indent, "platform_exclude", identifier,
+                                                           ("platform_exclude",)),
                            outside=lambda rest: add_to_twister_lists(rest, identifier, ("platform_allow",)))
 
 

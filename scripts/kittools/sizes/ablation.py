@@ -220,8 +220,8 @@ def not_taken(settings: tuple[str, ...], config: dict[str, str]) -> list[str]:
     for setting in settings:
         key, _, given = setting.partition("=")
         wanted = given.strip('"')  # as .config's reading gives a string
-        got = config.get(key, "n")
-        if got != wanted and not (wanted == "n" and key not in config):
+        got = config.get(key, "n")  # .config leaves out a symbol that is n
+        if got != wanted:
             refused.append(f"{setting} (got {got})")
     return refused
 
