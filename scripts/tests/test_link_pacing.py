@@ -39,8 +39,8 @@ def play(offer: Offer, steps: list[float]) -> tuple[PointTraffic, bytes]:
 
 def test_a_point_offers_the_same_traffic_whatever_the_host_timing():
     """Two hosts see the deployment's clock at different moments: the same
-    bytes go up, only in other chunks."""
-    coarse = [i * 0.1 for i in range(30)]
+    bytes go up, only in other chunks (a slow host takes longer)."""
+    coarse = [i * 0.1 for i in range(3000)]
     fine = [i * 0.003 for i in range(1000)]
     a_traffic, a_bytes = play(Offer(NOOP, 40, 5000, seed=7), coarse)
     b_traffic, b_bytes = play(Offer(NOOP, 40, 5000, seed=7), fine)
@@ -48,16 +48,59 @@ def test_a_point_offers_the_same_traffic_whatever_the_host_timing():
     assert len(a_bytes) == len(b_bytes) == a_traffic.commands_sent * len(NOOP) + int(5000 * serial_points.POINT_S)
 
 
+def test_a_late_host_does_not_make_up_its_lag_in_a_burst():
+    schedule = serial_points.Schedule(200, 240)
+    assert schedule.due(0.05) == 2  # 10 owed, CATCH_UP_S of it (2) goes: the schedule slips
+    assert schedule.due(0.05) == 0
+    assert schedule.due(0.055) == 1  # then on at its rate from there
+    assert schedule.due(0.065) == 2
+    # A slow rate still moves: one at a time however late
+    slow = serial_points.Schedule(10, 12)
+    assert slow.due(5.0) == 1 and slow.due(5.05) == 0 and slow.due(5.1) == 1
+
+
 def test_an_offer_is_complete_only_when_all_its_traffic_went():
     offer = Offer(NOOP, 10, 1000)
     traffic = PointTraffic("noise", 0, 50)
     offer.due(0.5, traffic)
-    assert not offer.complete(traffic)
-    for step in range(1, 200):  # the offer writes WRITE_MAX bytes at most a call
-        offer.due(serial_points.POINT_S + step, traffic)
-    assert offer.complete(traffic)
+    assert not offer.complete()
+    for step in range(1, 2000):
+        offer.due(0.5 + step * 0.01, traffic)
+    assert offer.complete() and traffic.commands_sent == int(10 * serial_points.POINT_S)
 
 
+class FakeLink:
+    """A link whose deployment clock the test sets."""
+
+    def __init__(self) -> None:
+        self.clock = 0.0
+        self.writes: list[bytes] = []
+
+    def estimated_now(self) -> float:
+        return self.clock
+
+    def unsent(self) -> int:
+        return 0
+
+    def send(self, data: bytes) -> None:
+        self.writes.append(data)
+
+
+def test_a_line_carries_no_more_than_its_rate_and_a_burst_at_once():
+    link = FakeLink()
+    line = client.Line(link, 115200)  # type: ignore[arg-type]
+    assert line.burst == int(11520 * client.LINE_BURST_S)
+    line.put(bytes(20000))
+    assert line.feed() == line.burst  # a full credit at the start
+    link.clock = 0.1  # a host that came back late: still one burst
+    assert line.feed() == line.burst
+    for step in range(1, 1001):  # then the line rate, over a second of LINE_STEP_S steps
+        link.clock = 0.1 + step * client.LINE_STEP_S
+        line.feed()
+    assert line.written == pytest.approx(2 * line.burst + 11520, abs=line.burst)
+    assert max(map(len, link.writes)) == line.burst
+    link.clock = 0.5  # a clock that stepped back (a late time tag) gives no credit
+    assert line.feed() == 0
 def test_the_quiet_before_a_request_is_skipped_not_made_up():
     quiet_from = serial_points.SETTLE_S - serial_points.REQUEST_QUIET_S
     assert traffic_time(quiet_from / 2) == quiet_from / 2

@@ -205,10 +205,8 @@ class Downlink:
 class Pacer:
     """Bytes up the link at a steady rate of the deployment's time, from a
     start on its clock: how many are due now. The ground's only clock for
-    the deployment is its downlink's time tags (Downlink.estimated_now), so
-    within a clock step bytes go in bursts; over a step they keep the rate.
-    QEMU's UART takes host bytes with no baud timing of its own: this is
-    what gives the emulated link its line rate."""
+    the deployment is its downlink's time tags (Downlink.estimated_now).
+    A Line carries what is due at no more than the line rate."""
 
     def __init__(self, link: Downlink, per_second: float) -> None:
         self.link = link
@@ -221,3 +219,60 @@ class Pacer:
 
     def elapsed(self) -> float:
         return self.link.estimated_now() - self.started
+
+
+#: The most of the line's time a write carries: QEMU's UART takes host bytes
+#: with no baud timing of its own, so a write reaches the firmware as one
+#: storm of receive interrupts. A real line brings a byte every 87 µs at
+#: 115200 baud; bytes the host wrote 256 at a time (a host that fell behind
+#: catching up) stalled a cooperative loop for 1.6 ms of receive interrupts
+#: and slipped the 1 kHz group in some plays and not others.
+LINE_BURST_S = 0.0015
+# How often a line's bytes are written while they wait: often enough that
+# LINE_BURST_S-sized writes keep up with a full line
+LINE_STEP_S = 0.001
+
+
+class Line:
+    """The ground's end of a serial line: bytes queued here go up the link
+    at no more than its line rate in the deployment's time, and at most
+    LINE_BURST_S of it in one write. Bytes a late host owes wait their turn
+    on the line instead of reaching the firmware faster than a line could
+    bring them. Played in real time (ground.boot(realtime=True)) the
+    deployment's clock runs with the host's, so writes are small and even;
+    in skipped idle time one host step is several of the deployment's."""
+
+    def __init__(self, link: Downlink, baud: int) -> None:
+        self.link = link
+        self.per_second = bytes_per_second(baud)
+        self.burst = max(1, int(self.per_second * LINE_BURST_S))
+        self._queue = bytearray()
+        self._credit = float(self.burst)
+        self._at = link.estimated_now()
+        #: Bytes written to the link through the line
+        self.written = 0
+
+    def put(self, data: bytes) -> None:
+        self._queue += data
+
+    def waiting(self) -> int:
+        """Bytes queued that the line has not carried yet."""
+        return len(self._queue)
+
+    def feed(self) -> int:
+        """Write what the line carries now; how many bytes that was."""
+        now = self.link.estimated_now()
+        # The estimate steps back when a late time tag corrects it: no credit then
+        if now > self._at:
+            self._credit = min(float(self.burst), self._credit + (now - self._at) * self.per_second)
+            self._at = now
+        count = min(int(self._credit), len(self._queue))
+        # Nothing more while the link has bytes it has not taken (they would
+        # go at once when it does)
+        if count == 0 or self.link.unsent():
+            return 0
+        self.link.send(bytes(self._queue[:count]))
+        del self._queue[:count]
+        self._credit -= count
+        self.written += count
+        return count

@@ -3,7 +3,8 @@
 
 A build of the ground scenario under QEMU gets FLOOD_S seconds of its own
 time of noise (bytes that frame nothing) at the link's full line rate,
-paced by its clock as the downlink shows it (kittools.link.client.Pacer),
+carried at the line rate of its clock as the downlink shows it, in real
+time (kittools.link.client.Line),
 while it measures that stretch as one segment (Timing.MEASURE_SEGMENT: its
 SWEEP lines give each rate group's slips and latencies under the flood).
 Then FLOOD_NOOPS NO_OPs, each sent when the one before is answered.
@@ -29,10 +30,10 @@ from typing import Any
 
 from kittools.build import runner
 from kittools.link import ground
-from kittools.link.client import Downlink, Pacer, bytes_per_second, command, frame, line_rate, noise
+from kittools.link.client import LINE_STEP_S, Downlink, Line, Pacer, command, frame, line_rate, noise
 from kittools.link.fuzz import NOOP_EVENT, answered
 from kittools.link.health import HEARTBEAT_CHANNEL, REPLY_TIMEOUT_S, LinkCounts, settled_counts
-from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S, WRITE_MAX
+from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S
 from kittools.workspace import KitError
 
 #: The deployment's seconds of noise at the full line rate
@@ -128,7 +129,8 @@ def run(build: Path) -> Outcome:
     opcodes = {c["name"]: c["opcode"] for c in json.loads(link_info.dictionary.read_text())["commands"]}
     noop = frame(command(opcodes["Kit.cmdDisp.CMD_NO_OP"]))
     outcome = Outcome()
-    with ground.boot(link_info) as qemu:
+    # In real time: the line's writes stay small and even (client.Line)
+    with ground.boot(link_info, realtime=True) as qemu:
         outcome.baud = line_rate(ground.link_line(qemu))
         link = Downlink(link_info.socket, link_info.dictionary)
         try:
@@ -177,7 +179,8 @@ def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: 
     outcome.bytes_sent += len(request)
     outcome.request_bytes = len(request)
     rng = random.Random(FLOOD_SEED)
-    pacer = Pacer(link, bytes_per_second(outcome.baud))
+    pacer = Pacer(link, 1.0)  # its clock only: the line paces the noise
+    line = Line(link, outcome.baud)
     prefix = f"KIT SWEEP axis={NOISE.name} point={FLOOD_POINT} "
     # The segment is FLOOD_S long and starts a hyperperiod after the
     # request: twice that without its lines is a deployment that stopped
@@ -191,13 +194,12 @@ def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: 
         sampled = link.telemetry_time.get(HEARTBEAT_CHANNEL)
         if sampled is not None and (not samples or sampled > samples[-1][0]):
             samples.append((sampled, int(link.telemetry[HEARTBEAT_CHANNEL])))
-        due = min(pacer.due(), WRITE_MAX)
-        if due:
-            link.send(noise(rng, due))
-            pacer.sent += due
-            outcome.bytes_sent += due
-        link.pump(lambda: False, 0.005)
-        qemu.read_until(lambda line: False, 0.001)
+        # The line kept full: what it carries is the full line rate
+        if not line.waiting():
+            line.put(noise(rng, line.burst))
+        outcome.bytes_sent += line.feed()
+        link.pump(lambda: False, LINE_STEP_S)
+        qemu.read_until(lambda _: False, 0.001)
     outcome.seconds = pacer.elapsed()
     # The rate over the flood's second half: its start is the request's and
     # the first bytes' way in

@@ -51,8 +51,6 @@ NOISE_NOOP_RATE = 40
 # ring (1,024 bytes, drained 64 per 100 Hz poll) empties in 160 ms, so the
 # request is not lost behind a full ring
 REQUEST_QUIET_S = 0.2
-# Most bytes written at once (a burst is the pacer's, not the socket's)
-WRITE_MAX = 256
 # Seed of the noise (each point its own stream from it)
 NOISE_SEED = 20261203
 SEGMENT_ARGUMENTS = struct.Struct(">iIII")  # SegmentAxis (I32), point, level, ticks
@@ -151,31 +149,60 @@ def traffic_time(elapsed: float) -> float:
     return elapsed - min(max(elapsed - quiet_from, 0.0), REQUEST_QUIET_S)
 
 
+#: How far a late host makes up what it owes at once (its loop stalled): a
+#: 100 Hz poll of the UART driver's, what the deployment reads at once
+#: anyway. Beyond it the schedule moves on instead: a level offers its
+#: rate, never a catch-up burst at the line rate, whose commands the
+#: dispatcher's in-flight limit dropped in some plays and not others.
+CATCH_UP_S = 0.01
+
+
+class Schedule:
+    """`total` items at `per_second` of the deployment's time: how many are
+    due at `elapsed`. Late by more than CATCH_UP_S, the schedule slips
+    (what it owes goes later, at its rate): every host offers the same
+    items at no more than their rate, only some hosts take longer."""
+
+    def __init__(self, per_second: float, total: int) -> None:
+        self.per_second = per_second
+        self.total = total
+        self.sent = 0
+        self._origin = 0.0  # the elapsed time the schedule counts from (moved on when it slips)
+
+    def due(self, elapsed: float) -> int:
+        if self.per_second <= 0 or self.sent >= self.total:
+            return 0
+        # (a hair over: a slipped origin is a float sum, and 1.9999 is 2)
+        owed = int(self.per_second * (elapsed - self._origin) + 1e-9) - self.sent
+        allowed = max(1, int(self.per_second * CATCH_UP_S))
+        if owed > allowed:
+            self._origin += (owed - allowed) / self.per_second
+            owed = allowed
+        count = max(0, min(owed, self.total - self.sent))
+        self.sent += count
+        return count
+
+    def complete(self) -> bool:
+        return self.sent >= self.total
+
+
 class Offer:
     """A point's traffic: NO_OPs at `commands_per_s`, and noise (bytes that
-    frame nothing) at `noise_per_s` with its NO_OPs among it, for POINT_S of
-    the deployment's time."""
+    frame nothing) at `noise_per_s` with its NO_OPs among it, POINT_S of
+    the deployment's time of each (a Line carries them at the line rate)."""
 
     def __init__(self, noop: bytes, commands_per_s: float, noise_per_s: float = 0.0, seed: int = 0) -> None:
         self.noop = noop
-        self.commands = int(commands_per_s * POINT_S)
-        self.commands_per_s = commands_per_s
-        self.noise = int(noise_per_s * POINT_S)
-        self.noise_per_s = noise_per_s
-        self.noise_sent = 0
+        self._commands = Schedule(commands_per_s, int(commands_per_s * POINT_S))
+        self._noise = Schedule(noise_per_s, int(noise_per_s * POINT_S))
         self._rng = random.Random(seed)
 
     def due(self, elapsed: float, traffic: PointTraffic) -> bytes:
         """The bytes due after `elapsed` seconds (the traffic's counts brought up to date)."""
-        commands = max(0, min(int(self.commands_per_s * elapsed), self.commands) - traffic.commands_sent)
-        commands = min(commands, WRITE_MAX // len(self.noop))
+        commands = self._commands.due(elapsed)
         traffic.commands_sent += commands
-        data = self.noop * commands
-        count = max(0, min(int(self.noise_per_s * elapsed), self.noise) - self.noise_sent)
-        count = min(count, WRITE_MAX)
-        self.noise_sent += count
-        return data + noise(self._rng, count)
+        return self.noop * commands + noise(self._rng, self._noise.due(elapsed))
 
-    def complete(self, traffic: PointTraffic) -> bool:
-        return traffic.commands_sent >= self.commands and self.noise_sent >= self.noise
+    def complete(self) -> bool:
+        return self._commands.complete() and self._noise.complete()
 

@@ -20,8 +20,10 @@ At each level the deployment measures a segment on request
 record the load scenario writes for its axes; breaking points come from them
 as for those axes (kittools.sweep). Every level is played REPEATS times: the
 host's bytes reach QEMU at host-timed moments, so a serial point's latencies
-differ from run to run (the report gives their median and spread); what it
-delivered, and where a group breaks, do not. The host adds what only it
+differ from run to run (the report gives their median and spread), as do
+the commands lost past the link's delivery breaking point; the breaking
+points, taken from the median play, do not. The bytes go up a client.Line
+at the line rate, in real time (docs/ground.md says why). The host adds what only it
 sees: what it sent and what came back, and LinkHealth's counts of where
 every byte went (received by the UART, dropped by its ring, discarded by the
 frame detector).
@@ -40,7 +42,7 @@ from pathlib import Path
 
 from kittools.build import runner
 from kittools.link import ground
-from kittools.link.client import Downlink, Pacer, bytes_per_second, command, frame, line_rate
+from kittools.link.client import LINE_STEP_S, Downlink, Line, Pacer, bytes_per_second, command, frame, line_rate
 from kittools.link.health import REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import (
     DOWNLINK,
@@ -74,9 +76,10 @@ U32 = struct.Struct(">I")
 class Driver:
     """One booted ground build: bytes up its link, its console read for the records."""
 
-    def __init__(self, qemu: runner.Qemu, link: Downlink, opcodes: dict[str, int]) -> None:
+    def __init__(self, qemu: runner.Qemu, link: Downlink, opcodes: dict[str, int], baud: int) -> None:
         self.qemu = qemu
         self.link = link
+        self.baud = baud
         self.opcodes = opcodes
         self.noop = frame(command(opcodes["Kit.cmdDisp.CMD_NO_OP"]))
 
@@ -98,32 +101,36 @@ class Driver:
         answered_before = self.link.events[NOOP_EVENT]
         before = LinkCounts.of(self.link)
         pacer = Pacer(self.link, 1.0)  # its clock only: the offer paces itself
+        line = Line(self.link, self.baud)
         # The request is a command like the traffic's, and the link loses
         # commands beyond its limits (LinkHealth's in-flight limit, the UART's
         # ring): the traffic pauses just before it, and it is sent again if
         # no segment followed
         request_at = SETTLE_S
         deadline = time.monotonic() + REPLY_TIMEOUT_S + SEGMENT_TICKS / 1000
-        while len(self.sweep_lines(axis, traffic.point)) < 3 or not offer.complete(traffic):
+        while len(self.sweep_lines(axis, traffic.point)) < 3 or not offer.complete() or line.waiting():
             if time.monotonic() > deadline:
                 raise KitError(f"no SWEEP lines for {axis.name} point {traffic.point}:\n"
                                f"{runner.halt_lines(self.qemu.lines) or self.qemu.text()[-2000:]}")
             elapsed = pacer.elapsed()
             if not request_at - REQUEST_QUIET_S <= elapsed < request_at:
                 data = offer.due(traffic_time(elapsed), traffic)
-                if data:
-                    self.link.send(data)
-                    traffic.bytes_sent += len(data)
-            if elapsed >= request_at:
+                line.put(data)
+                traffic.bytes_sent += len(data)
+            line.feed()
+            # Again only while no segment followed (a slow host's point outlasts the retry time)
+            if elapsed >= request_at and not self.sweep_lines(axis, traffic.point):
                 request = frame(command(self.opcodes["Kit.timing.MEASURE_SEGMENT"],
                                         SEGMENT_ARGUMENTS.pack(axis.code, traffic.point, traffic.level,
                                                                SEGMENT_TICKS)))
-                self.link.send(request)
+                # On the line behind what it carries (a frame the line has
+                # split must not be cut by another)
+                line.put(request)
                 traffic.bytes_sent += len(request)
                 traffic.requests += 1
                 request_at = elapsed + SEGMENT_TICKS / 1000 + REQUEST_RETRY_S
-            self.link.pump(lambda: False, 0.005)
-            self.qemu.read_until(lambda line: False, 0.001)
+            self.link.pump(lambda: False, LINE_STEP_S)
+            self.qemu.read_until(lambda _: False, 0.001)
         if unload:
             self.link.send(unload)
             traffic.bytes_sent += len(unload)
@@ -158,12 +165,13 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
     data = json.loads(link_info.dictionary.read_text())
     opcodes = {c["name"]: c["opcode"] for c in data["commands"]}
     outcome = Outcome()
-    with ground.boot(link_info) as qemu:
+    # In real time: the line's writes stay small and even (client.Line)
+    with ground.boot(link_info, realtime=True) as qemu:
         baud = line_rate(ground.link_line(qemu))
         outcome.lines.append(f"KIT LINE baud={baud} bytes_per_s={int(bytes_per_second(baud))}")
         link = Downlink(link_info.socket, link_info.dictionary)
         try:
-            driver = Driver(qemu, link, opcodes)
+            driver = Driver(qemu, link, opcodes, baud)
             # The deployment's clock reaches the host with its first telemetry
             if not link.pump(lambda: link.now > 0, REPLY_TIMEOUT_S):
                 raise KitError(f"{build}: no downlink within {REPLY_TIMEOUT_S:.0f} s")

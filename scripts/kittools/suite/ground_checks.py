@@ -34,7 +34,8 @@ INTEGRATION = KIT_ROOT / "tests" / "integration"
 # dictionary wait for the deployment's answers and pace on its own clock,
 # however long the host takes: two builds at a time, one QEMU per core (the
 # sweep's latencies are host-timed anyway: played three times, median and
-# spread; what it offers and delivers does not depend on the host).
+# spread; what it offers does not depend on the host, and its breaking
+# points are the median play's).
 INTEGRATION_JOBS = 2
 RAW_LINK_JOBS = 2
 
