@@ -224,13 +224,16 @@ class Pacer:
 #: The most of the line's time a write carries: QEMU's UART takes host bytes
 #: with no baud timing of its own, so a write reaches the firmware as one
 #: storm of receive interrupts. A real line brings a byte every 87 µs at
-#: 115200 baud; bytes the host wrote 256 at a time (a host that fell behind
-#: catching up) stalled a cooperative loop for 1.6 ms of receive interrupts
-#: and slipped the 1 kHz group in some plays and not others.
-LINE_BURST_S = 0.0015
+#: 115200 baud; with bytes the host wrote 256 at a time (a host that fell
+#: behind catching up) the baremetal 1 kHz group saw 1.6 ms latencies, about
+#: 256 receive interrupts' worth, and slipped in some plays and not others.
+LINE_BURST_S = 0.002
 # How often a line's bytes are written while they wait: often enough that
 # LINE_BURST_S-sized writes keep up with a full line
 LINE_STEP_S = 0.001
+#: A loop that feeds a line looks at the console this long: a longer look
+#: (it waits when QEMU prints nothing) slowed the loop below a full line
+CONSOLE_PEEK_S = 0.0002
 
 
 class Line:

@@ -30,7 +30,7 @@ from typing import Any
 
 from kittools.build import runner
 from kittools.link import ground
-from kittools.link.client import LINE_STEP_S, Downlink, Line, Pacer, command, frame, line_rate, noise
+from kittools.link.client import CONSOLE_PEEK_S, LINE_STEP_S, Downlink, Line, Pacer, command, frame, line_rate, noise
 from kittools.link.fuzz import NOOP_EVENT, answered
 from kittools.link.health import HEARTBEAT_CHANNEL, REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S
@@ -199,7 +199,7 @@ def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: 
             line.put(noise(rng, line.burst))
         outcome.bytes_sent += line.feed()
         link.pump(lambda: False, LINE_STEP_S)
-        qemu.read_until(lambda _: False, 0.001)
+        qemu.read_until(lambda _: False, CONSOLE_PEEK_S)
     outcome.seconds = pacer.elapsed()
     # The rate over the flood's second half: its start is the request's and
     # the first bytes' way in

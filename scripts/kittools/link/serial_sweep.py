@@ -42,7 +42,17 @@ from pathlib import Path
 
 from kittools.build import runner
 from kittools.link import ground
-from kittools.link.client import LINE_STEP_S, Downlink, Line, Pacer, bytes_per_second, command, frame, line_rate
+from kittools.link.client import (
+    CONSOLE_PEEK_S,
+    LINE_STEP_S,
+    Downlink,
+    Line,
+    Pacer,
+    bytes_per_second,
+    command,
+    frame,
+    line_rate,
+)
 from kittools.link.health import REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import (
     DOWNLINK,
@@ -130,7 +140,7 @@ class Driver:
                 traffic.requests += 1
                 request_at = elapsed + SEGMENT_TICKS / 1000 + REQUEST_RETRY_S
             self.link.pump(lambda: False, LINE_STEP_S)
-            self.qemu.read_until(lambda _: False, 0.001)
+            self.qemu.read_until(lambda _: False, CONSOLE_PEEK_S)
         if unload:
             self.link.send(unload)
             traffic.bytes_sent += len(unload)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import statistics
 from typing import Any
 
+from kittools import sweep
 from kittools.model import Results, Variant
 from kittools.report.document import Table, Text, fmt
 
@@ -71,9 +72,14 @@ def serial_link_table(data: Results) -> Table | None:
 
 
 def delivery_breaking_point(plays: dict[tuple[str, int], list[dict[str, Any]]], axis: str) -> int | None:
-    """The lowest level of an axis where most plays lost a command."""
+    """The lowest level of an axis where the median play lost more than
+    sweep.HOST_TIMED_SHARE of the commands offered (and at least one)."""
     for (found_axis, level), records in sorted(plays.items()):
-        if found_axis == axis and statistics.median_low(int(r["lost"]) for r in records) > 0:
+        if found_axis != axis:
+            continue
+        lost = statistics.median_low(int(r["lost"]) for r in records)
+        offered = max(int(r["offered"]) for r in records)
+        if lost > sweep.HOST_TIMED_SHARE * offered:
             return level
     return None
 
@@ -89,8 +95,9 @@ def delivery_table(data: Results) -> Table | None:
     for axis in axes:
         unit = "cmd/s" if axis == "uplink" else "%"
         points = [delivery_breaking_point(found[v], axis) for v in names]
-        rows.append([axis] + [f"{p} {unit}" if p is not None else "none lost" for p in points])
-    return Table("Delivery breaking point: the lowest level where most plays lost a command", ["axis"] + names, rows)
+        rows.append([axis] + [f"{p} {unit}" if p is not None else "held" for p in points])
+    return Table(f"Delivery breaking point: the lowest level where the median play lost more than "
+                 f"{sweep.HOST_TIMED_SHARE:.0%} of its commands (every play's count is below)", ["axis"] + names, rows)
 
 
 def flood_table(data: Results) -> Table | None:
