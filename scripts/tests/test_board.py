@@ -641,7 +641,8 @@ SMALL_SUITE = SUITE + """  profile.small.baremetal_passive:
 def _kit_with_small_part(tmp_path: Path) -> Path:
     """The fake kit with a small part: its folder, its baseline (the
     fprime-small build it plays) and its scenario in the suite."""
-    root = _kit(tmp_path, {"baremetal_passive": (110_000, 44_000), "rtos": (120_000, 60_000)})
+    root = _kit(tmp_path, {"baremetal": (112_000, 45_000), "baremetal_budgeted": (113_000, 45_500),
+                           "baremetal_passive": (110_000, 44_000), "rtos": (120_000, 60_000)})
     part = root / "boards" / "qemu_cortex_m3_small"
     part.mkdir()
     (part / "Kconfig.defconfig").write_text("config ISR_STACK_SIZE\n\tdefault 512\n")
@@ -673,6 +674,13 @@ def test_a_board_the_kit_profile_does_not_fit_takes_the_small_parts_build_that_f
     assert suite.count("qemu_g0") == 1
     assert suite.index("qemu_g0") > suite.index("profile.small.baremetal_passive")
     assert "kit compare" not in text  # a small part has nothing to compare
+
+
+def test_a_baseline_without_every_model_is_said_so_not_called_a_misfit(tmp_path):
+    root = _kit(tmp_path, {"baremetal_passive": (110_000, 44_000), "rtos": (120_000, 60_000)})
+    with pytest.raises(KitError, match="has no baremetal variant to measure the deployment from") as error:
+        boards.new_board("qemu_cortex_m0", root=root, zephyr=_zephyr(tmp_path), say=_quiet)
+    assert "does not fit" not in str(error.value) and "small part" not in str(error.value)
 
 
 def test_a_board_too_small_for_the_small_part_too_is_refused(tmp_path):

@@ -30,10 +30,16 @@ def smallest_models(measured: model.Results) -> dict[str, str]:
             for what, metric in need.items()}
 
 
+class DoesNotFit(KitError):
+    """The board is too small for the deployment as measured (not: the
+    measurement or the board's memory is missing, which stay KitErrors)."""
+
+
 def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -> list[str]:
     """The deployment's measured need (a ported board's results file)
     against the board's memory, from the smallest model (per resource, the
-    variant that needs the least): KitError if even it does not fit, named.
+    variant that needs the least): DoesNotFit if even it does not fit, named;
+    KitError when the board's memory or a model's measurement is missing.
     Returns a headroom line per variant, and for a larger model the board
     cannot hold, a line saying so (its build in kit test fails until the
     deployment shrinks)."""
@@ -58,7 +64,7 @@ def check_fit(board: ZephyrBoard, baseline: Path, shown_as: str | None = None) -
     if short:
         levers = "; ".join(f"{what}: {_LEVERS[what]}" for what in ("flash", "RAM")
                            if need[smallest[what]][what] > have[what])
-        raise KitError(f"{board.identifier} cannot hold the deployment as measured in {shown_as}: "
+        raise DoesNotFit(f"{board.identifier} cannot hold the deployment as measured in {shown_as}: "
                        + "; ".join(short) + ". Shrink the deployment first (docs/porting.md, 'Memory budget'): "
                        + levers + ".")
     lines: list[str] = []

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from kittools import log, workspace
 from kittools.boards.devicetree import link_uarts, spare_uart
-from kittools.boards.memory import SmallFit, check_fit, fit_small_part, smallest_models
+from kittools.boards.memory import DoesNotFit, SmallFit, check_fit, fit_small_part, smallest_models
 from kittools.boards.suites import allow_module, join_small_suite, join_suite
 from kittools.boards.zephyr import ZephyrBoard, check_arch, find_board, hal_module, zephyr_version
 from kittools.suite import platforms, results
@@ -191,7 +191,7 @@ def _fit(board: ZephyrBoard, baseline: Path, shown_as: str, reference: str, root
     fits); KitError when neither does."""
     try:
         lines = check_fit(board, baseline, shown_as)
-    except KitError as refused:
+    except DoesNotFit as refused:
         small = fit_small_part(board, root, platforms.small_parts(root / SMALL_PART_SUITE))
         if small is None:
             raise KitError(f"{refused} Nor does the smallest build of a small part (tests/baselines of "
