@@ -214,7 +214,7 @@ def test_a_serial_level_played_three_times_is_its_median_with_the_spread(tmp_pat
     assert "| noise | 75 | 48/46/48 of 48 | 0/600/0 |" in markdown
     assert "| noise | held | held |" in markdown  # the median play lost nothing
     assert "max (µs) (spread)" in markdown and "| 200 (100–300) |" in markdown  # cycles at 12 MHz
-    assert "| rg1kHz slips | 3 | 3 |" in markdown
+    assert "| rg1kHz slips (share of its cycles) | 3 (0.03%) | 3 (0.03%) |" in markdown
     assert "| NO_OPs after the flood answered | 20 | 20 |" in markdown
 
 

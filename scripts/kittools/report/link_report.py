@@ -117,12 +117,20 @@ def flood_table(data: Results) -> Table | None:
               ("unaccounted", "unaccounted"), ("NO_OPs after the flood answered", "noops_answered")]
     rows: list[list[Any]] = [[label] + [_number(floods[v].get(key, "")) for v in names] for label, key in fields]
     for rg in dict.fromkeys(rg for v in names for rg in groups[v]):
-        rows.append([f"{rg} slips"] + [_number(groups[v][rg]["slips"]) if rg in groups[v] else "" for v in names])
+        rows.append([f"{rg} slips (share of its cycles)"] + [_slips(groups[v][rg]) if rg in groups[v] else ""
+                                                            for v in names])
         rows.append([f"{rg} latency max (µs)"] + [
             fmt(int(groups[v][rg]["latency_max"]) * 1e6 / cycles_hz) if rg in groups[v] and cycles_hz > 0 else ""
             for v in names])
     return Table("The flood: noise at the full line rate, then NO_OPs (every byte accounted for: read by the UART, "
                  "then dropped by its ring or decided on by the frame detector)", ["quantity"] + names, rows)
+
+
+def _slips(record: dict[str, Any]) -> str:
+    """A group's slips during the flood, with their share of the cycles it
+    should have run (a 1 kHz group and a 10 Hz one compare by share)."""
+    slips, expected = int(record["slips"]), int(record.get("expected", 0))
+    return f"{slips} ({slips / expected:.2%})" if expected > 0 else str(slips)
 
 
 def _number(value: Any) -> Any:
