@@ -202,20 +202,14 @@ class Downlink:
                     self.now = max(self.now, self.telemetry_time[name])
 
 
-class Pacer:
-    """Bytes up the link at a steady rate of the deployment's time, from a
-    start on its clock: how many are due now. The ground's only clock for
-    the deployment is its downlink's time tags (Downlink.estimated_now).
-    A Line carries what is due at no more than the line rate."""
+class Stopwatch:
+    """The deployment's seconds since a start on its clock. The ground's only
+    clock for the deployment is its downlink's time tags
+    (Downlink.estimated_now); a Line carries bytes by it."""
 
-    def __init__(self, link: Downlink, per_second: float) -> None:
+    def __init__(self, link: Downlink) -> None:
         self.link = link
-        self.per_second = per_second
         self.started = link.estimated_now()
-        self.sent = 0
-
-    def due(self) -> int:
-        return max(0, int(self.per_second * (self.link.estimated_now() - self.started)) - self.sent)
 
     def elapsed(self) -> float:
         return self.link.estimated_now() - self.started
@@ -252,8 +246,6 @@ class Line:
         self._queue = bytearray()
         self._credit = float(self.burst)
         self._at = link.estimated_now()
-        #: Bytes written to the link through the line
-        self.written = 0
 
     def put(self, data: bytes) -> None:
         self._queue += data
@@ -277,5 +269,4 @@ class Line:
         self.link.send(bytes(self._queue[:count]))
         del self._queue[:count]
         self._credit -= count
-        self.written += count
         return count

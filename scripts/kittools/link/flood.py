@@ -30,7 +30,17 @@ from typing import Any
 
 from kittools.build import runner
 from kittools.link import ground
-from kittools.link.client import CONSOLE_PEEK_S, LINE_STEP_S, Downlink, Line, Pacer, command, frame, line_rate, noise
+from kittools.link.client import (
+    CONSOLE_PEEK_S,
+    LINE_STEP_S,
+    Downlink,
+    Line,
+    Stopwatch,
+    command,
+    frame,
+    line_rate,
+    noise,
+)
 from kittools.link.fuzz import NOOP_EVENT, answered
 from kittools.link.health import HEARTBEAT_CHANNEL, REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S
@@ -179,7 +189,7 @@ def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: 
     outcome.bytes_sent += len(request)
     outcome.request_bytes = len(request)
     rng = random.Random(FLOOD_SEED)
-    pacer = Pacer(link, 1.0)  # its clock only: the line paces the noise
+    pacer = Stopwatch(link)  # the line paces the noise
     line = Line(link, outcome.baud)
     prefix = f"KIT SWEEP axis={NOISE.name} point={FLOOD_POINT} "
     # The segment is FLOOD_S long and starts a hyperperiod after the

@@ -47,7 +47,7 @@ from kittools.link.client import (
     LINE_STEP_S,
     Downlink,
     Line,
-    Pacer,
+    Stopwatch,
     bytes_per_second,
     command,
     frame,
@@ -110,7 +110,7 @@ class Driver:
         downlink load off) and account for what got through."""
         answered_before = self.link.events[NOOP_EVENT]
         before = LinkCounts.of(self.link)
-        pacer = Pacer(self.link, 1.0)  # its clock only: the offer paces itself
+        pacer = Stopwatch(self.link)  # the offer paces itself, the line carries it
         line = Line(self.link, self.baud)
         # The request is a command like the traffic's, and the link loses
         # commands beyond its limits (LinkHealth's in-flight limit, the UART's
