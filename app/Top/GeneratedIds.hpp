@@ -17,6 +17,10 @@
 #else
 #include "Svc/CmdDispatcher/CommandDispatcherComponentAc.hpp"
 #endif
+#if defined(CONFIG_KIT_SERVICE_CDH)
+#include "Svc/Health/HealthComponentAc.hpp"
+#include "Svc/Version/VersionComponentAc.hpp"
+#endif
 #include "app/Components/Controller/ControllerComponentAc.hpp"
 #include "app/Components/Faults/FaultsComponentAc.hpp"
 #include "app/Components/Load/LoadComponentAc.hpp"
@@ -54,6 +58,17 @@ struct FaultsIds : FaultsComponentBase {
     static constexpr FwOpcodeType ASSERT = OPCODE_ASSERT;
 };
 
+#if defined(CONFIG_KIT_SERVICE_CDH)
+struct HealthIds : Svc::HealthComponentBase {
+    static constexpr FwEventIdType PING_WARN = EVENTID_HLTH_PING_WARN;
+    static constexpr FwEventIdType PING_LATE = EVENTID_HLTH_PING_LATE;
+    static constexpr FwEventIdType PING_WRONG_KEY = EVENTID_HLTH_PING_WRONG_KEY;
+};
+struct VersionIds : Svc::VersionComponentBase {
+    static constexpr FwEventIdType FRAMEWORK_VERSION = EVENTID_FRAMEWORKVERSION;
+    static constexpr FwEventIdType PROJECT_VERSION = EVENTID_PROJECTVERSION;
+};
+#endif
 struct TimingIds : TimingComponentBase {
     static constexpr FwEventIdType RATE_GROUP_SLIP = EVENTID_RATEGROUPSLIP;
 };

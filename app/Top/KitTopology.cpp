@@ -36,6 +36,42 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
     {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
 };
 
+#if defined(CONFIG_KIT_SERVICE_CDH)
+namespace {
+// Health's ping entries, entry i on health's port i (FPP generates health's
+// table from the same connections): the pinged instance and its probe
+struct PingEntry {
+    const char* name;
+    PingProbe* probe;
+};
+const PingEntry PING_ENTRIES[PING_ENTRY_COUNT] = {
+    {"events", &eventsPing},   {"tlmSend", &tlmSendPing},
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    {"cmdDisp", &cmdDispPing},
+#endif
+#if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
+    {"rg1kHz", &rg1kHzPing},   {"rg100Hz", &rg100HzPing}, {"rg10Hz", &rg10HzPing},
+#endif
+};
+}  // namespace
+
+const char* pingEntryName(FwIndexType entry) {
+    FW_ASSERT(entry >= 0 && entry < PING_ENTRY_COUNT, static_cast<FwAssertArgType>(entry));
+    return PING_ENTRIES[entry].name;
+}
+
+const PingProbe& pingProbe(FwIndexType entry) {
+    FW_ASSERT(entry >= 0 && entry < PING_ENTRY_COUNT, static_cast<FwAssertArgType>(entry));
+    return *PING_ENTRIES[entry].probe;
+}
+
+void startPingSegment() {
+    for (const PingEntry& entry : PING_ENTRIES) {
+        entry.probe->startSegment();
+    }
+}
+#endif
+
 namespace {
 // Members per rate group: the ports of the rate group class the build chose
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)

@@ -50,6 +50,26 @@ struct QueueUse {
 };
 QueueUse queueUse(const ActiveInstance& instance);
 
+//! Svc.Health's ping entries: events, tlmSend, the dispatcher where it is
+//! active, and the rate groups where the model pings them
+//! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS). Entry i is health's port i.
+#if defined(CONFIG_KIT_SERVICE_CDH)
+#if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
+constexpr FwSizeType PINGED_RATE_GROUPS = 3;
+#else
+constexpr FwSizeType PINGED_RATE_GROUPS = 0;
+#endif
+constexpr FwIndexType PING_ENTRY_COUNT = 2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS;
+//! Name of ping entry `entry`
+const char* pingEntryName(FwIndexType entry);
+//! The probe timing ping entry `entry`'s round trips
+const PingProbe& pingProbe(FwIndexType entry);
+//! Starts a segment on every ping probe (a load sweep's point)
+void startPingSegment();
+#endif
+//! The rate group that runs health (its Run port): the 10 Hz group
+constexpr FwIndexType HEALTH_RATE_GROUP = 2;
+
 //! Instantiate, wire, configure and start the deployment (tasks included)
 void setupTopology(const TopologyState& state);
 

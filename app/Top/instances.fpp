@@ -35,6 +35,9 @@ module Kit {
     @ three channels every cycle); the fuzzing peaked at 9 on both boards
     @ with 16 (KIT QUEUE's dropped= counts what a full queue lost)
     constant comQueue = 12
+    @ Health is queued: its Run (10 Hz) first takes the answers that came
+    @ back since the last one, at most one per ping entry, and a command
+    constant $health = HealthPingPorts + 2
   }
 
   @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:
@@ -92,8 +95,53 @@ module Kit {
     priority Priorities.comQueue
 
   # ----------------------------------------------------------------------
+  # Queued components
+  # ----------------------------------------------------------------------
+
+  @ F´'s health checker (CdhCore's): every active component with ping ports
+  @ pinged each 10 Hz cycle, a WARNING_HI when one has not answered in
+  @ WARN cycles, FATAL in FATAL cycles (app/Top/KitTopologyDefs.hpp)
+  instance $health: Svc.Health base id 0x2900 \
+    queue size Queues.$health \
+  {
+    # FPP builds health's ping table from its connections (WARN and FATAL
+    # per entry: app/Top/KitTopologyDefs.hpp); CdhCore's setup
+    phase Fpp.ToCpp.Phases.configConstants """
+    enum {
+        HEALTH_WATCHDOG_CODE = 0x123
+    };
+    """
+    phase Fpp.ToCpp.Phases.configComponents """
+    Kit::health.setPingEntries(
+        ConfigObjects::Kit_health::pingEntries,
+        FW_NUM_ARRAY_ELEMENTS(ConfigObjects::Kit_health::pingEntries),
+        ConfigConstants::Kit_health::HEALTH_WATCHDOG_CODE
+    );
+    """
+  }
+
+  # ----------------------------------------------------------------------
   # Passive components
   # ----------------------------------------------------------------------
+
+  @ F´'s version reporter (CdhCore's): the framework's, the project's and
+  @ the libraries' versions, as events at startup and on command
+  instance version: Svc.Version base id 0x2A00 \
+  {
+    # The versions as events and telemetry at startup (CdhCore's setting)
+    phase Fpp.ToCpp.Phases.configComponents """
+    Kit::version.config(true);
+    """
+  }
+
+  # Health's pings, timed: one probe per ping entry (the kit's instrument,
+  # app/Components/PingProbe); the entries are in app/Top/topology.fpp
+  instance eventsPing: Kit.PingProbe base id 0x2B00
+  instance tlmSendPing: Kit.PingProbe base id 0x2B10
+  instance rg1kHzPing: Kit.PingProbe base id 0x2B20
+  instance rg100HzPing: Kit.PingProbe base id 0x2B30
+  instance rg10HzPing: Kit.PingProbe base id 0x2B40
+  instance cmdDispPing: Kit.PingProbe base id 0x2B50
 
   instance rateGroupDriver: Svc.RateGroupDriver base id 0x0400
 

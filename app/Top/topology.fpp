@@ -36,6 +36,13 @@ module Kit {
     # that form has (app/Top/dispatcher/)
     import Dispatcher
 
+    # F´'s health and version services (CdhCore's), where the board's
+    # profile has them (app/Top/services/), and health's pings of the
+    # dispatcher and the rate groups, where the build has those too
+    import CdhServices
+    import DispatcherHealth
+    import RateGroupHealth
+
     command connections instance cmdDisp
     event connections instance events
     telemetry connections instance tlmSend
@@ -70,7 +77,8 @@ module Kit {
       rg10Hz.RateGroupMemberOut[6] -> faults.schedIn[2]
       rg10Hz.RateGroupMemberOut[7] -> comQueue.run
       rg10Hz.RateGroupMemberOut[8] -> linkHealth.schedIn
-      rg10Hz.RateGroupMemberOut[9] -> timing.cycleEnd[2]
+      # [9]: health's 10 Hz run, where the build has it (app/Top/services/)
+      rg10Hz.RateGroupMemberOut[10] -> timing.cycleEnd[2]
     }
 
     # The background load's burst goes through its own queue

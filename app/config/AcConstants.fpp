@@ -2,18 +2,19 @@
 # Port-array sizes, cut to what the kit's topology uses: every port is an
 # object in RAM, so the F´ defaults (sized for a Linux Ref app) cost kilobytes.
 
-@ Members per active rate group (probe start + up to 8 components + probe end)
-constant ActiveRateGroupOutputPorts = 10
+@ Members per active rate group (probe start + up to 9 components + probe end)
+constant ActiveRateGroupOutputPorts = 11
 
 @ Members per passive rate group (baremetal_passive: the same members as
 @ the active ones'; no other build has an instance, so no other pays)
-constant PassiveRateGroupOutputPorts = 10
+constant PassiveRateGroupOutputPorts = 11
 
 @ Rate groups driven by the tick: 1 kHz, 100 Hz, 10 Hz
 constant RateGroupDriverRateGroupPorts = 3
 
-@ Components that own commands (cmdDisp, events, controller, load, timing + spare)
-constant CmdDispatcherComponentCommandPorts = 8
+@ Components that own commands (cmdDisp, events, controller, load, timing,
+@ faults, health, version + spare)
+constant CmdDispatcherComponentCommandPorts = 10
 
 @ Command sources: the scripted uplink (index 0), the ground link (1)
 constant CmdDispatcherSequencePorts = 2
@@ -21,7 +22,9 @@ constant CmdDispatcherSequencePorts = 2
 constant SeqDispatcherSequencerPorts = 1
 constant CmdSplitterPorts = CmdDispatcherSequencePorts
 constant StaticMemoryAllocations = 1
-constant HealthPingPorts = 1
+@ Health's ping entries: events, tlmSend, the active dispatcher, the
+@ active rate groups where the model pings them (app/Top/topology.fpp)
+constant HealthPingPorts = 6
 constant FileDownCompletePorts = 1
 @ Downlink queues: events, telemetry
 constant ComQueueComPorts = 2

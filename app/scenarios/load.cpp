@@ -61,9 +61,18 @@ Uplink::Frame idleCommand(const Axis& axis) {
     return loadCommand(axis, 0);
 }
 
+// Where health's warning would first fire along an axis: the first level at
+// which a ping waited its warning deadline, and the longest wait on the axis
+struct HealthOnAxis {
+    bool reached;
+    U32 level;
+    U32 worst;
+};
+
 // Sweep one axis; false if a load command was not accepted
-bool sweep(const Axis& axis, U32 breakUs[]) {
+bool sweep(const Axis& axis, U32 breakUs[], HealthOnAxis& health) {
     bool commanded = true;
+    health = {false, 0, 0};
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         breakUs[i] = NO_BREAK;
     }
@@ -74,6 +83,7 @@ bool sweep(const Axis& axis, U32 breakUs[]) {
         Session::run(SETTLE_TICKS);
         commanded = commanded && frame.asExpected();
         Session::nextSegment();
+        Report::startHealthSegment();
         const U32 processedBefore = load.processed();
         const U32 droppedBefore = load.dropped();
         Session::run(MEASURE_TICKS);
@@ -87,6 +97,11 @@ bool sweep(const Axis& axis, U32 breakUs[]) {
                                              load.processed() - processedBefore,
                                              load.dropped() - droppedBefore};
         Report::sweepPoint(measured, broke);
+        const U32 pingWorst = Report::sweepHealth(measured);
+        health.worst = (pingWorst > health.worst) ? pingWorst : health.worst;
+        if (!health.reached && pingWorst >= Report::pingWarnDeadline()) {
+            health = {true, us, health.worst};
+        }
         for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
             if (broke[i] && breakUs[i] == NO_BREAK) {
                 breakUs[i] = us;
@@ -118,11 +133,15 @@ void printBreaks(const Axis& axis, const U32 breakUs[]) {
 bool playLoad(const Context& context) {
     bool commanded = true;
     U32 breakUs[FW_NUM_ARRAY_ELEMENTS(AXES)][RATE_GROUP_COUNT] = {};
+    HealthOnAxis health[FW_NUM_ARRAY_ELEMENTS(AXES)] = {};
     for (FwSizeType a = 0; a < FW_NUM_ARRAY_ELEMENTS(AXES); a++) {
-        commanded = sweep(AXES[a], breakUs[a]) && commanded;
+        commanded = sweep(AXES[a], breakUs[a], health[a]) && commanded;
     }
     for (FwSizeType a = 0; a < FW_NUM_ARRAY_ELEMENTS(AXES); a++) {
         printBreaks(AXES[a], breakUs[a]);
+    }
+    for (FwSizeType a = 0; a < FW_NUM_ARRAY_ELEMENTS(AXES); a++) {
+        Report::healthBreak(AXES[a].name, health[a].level, health[a].reached, health[a].worst);
     }
     printk("KIT LOAD commands=%s processed=%u dropped=%u\n", commanded ? "OK" : "FAILED",
            static_cast<unsigned>(load.processed()), static_cast<unsigned>(load.dropped()));

@@ -37,11 +37,12 @@ bool playNominal(const Context& context) {
     const bool measured = Report::results(CONFIG_KIT_RUN_TICKS, context.probeCost, context.allocator);
     const bool commanded = Report::commands(script, SCRIPT_FRAMES);
     const bool downlinked = Report::downlinkAndTicks();
+    const bool healthy = Report::health();
     Report::stacks();
     Report::queues();
     Report::cpu(Session::cyclesOf(CONFIG_KIT_RUN_TICKS));
     Report::schedule();
-    return measured && commanded && downlinked;
+    return measured && commanded && downlinked && healthy;
 }
 
 }  // namespace Scenario

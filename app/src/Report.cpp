@@ -183,6 +183,99 @@ bool downlinkAndTicks() {
     return downlink.malformedPackets() == 0 && downlink.uncountedEvents() == 0;
 }
 
+U32 pingWarnDeadline() {
+#if defined(CONFIG_KIT_SERVICE_CDH)
+    // Health pings each entry once per run of its rate group, and warns
+    // when an answer has not come back by its WARN-th run after the ping
+    return PING_WARN_CYCLES * RATE_GROUPS[HEALTH_RATE_GROUP].divisor *
+           (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
+#else
+    return 0xFFFFFFFFu;
+#endif
+}
+
+void startHealthSegment() {
+#if defined(CONFIG_KIT_SERVICE_CDH)
+    startPingSegment();
+#endif
+}
+
+U32 sweepHealth(const SweepPoint& point) {
+#if defined(CONFIG_KIT_SERVICE_CDH)
+    const U32 now = TickClock::now();
+    U32 worst = 0;
+    FwIndexType worstEntry = 0;
+    for (FwIndexType entry = 0; entry < PING_ENTRY_COUNT; entry++) {
+        const U32 wait = pingProbe(entry).segmentWorst(now);
+        if (wait > worst) {
+            worst = wait;
+            worstEntry = entry;
+        }
+    }
+    printk("KIT SWEEPHEALTH axis=%s point=%u level=%u unit=%s ping_max=%u entry=%s warn=%u\n", point.axis,
+           static_cast<unsigned>(point.point), static_cast<unsigned>(point.level), point.unit,
+           static_cast<unsigned>(worst), pingEntryName(worstEntry), static_cast<unsigned>(pingWarnDeadline()));
+    return worst;
+#else
+    (void)point;
+    return 0;
+#endif
+}
+
+void healthBreak(const char* axis, U32 level, bool reached, U32 worst) {
+#if defined(CONFIG_KIT_SERVICE_CDH)
+    if (reached) {
+        printk("KIT HEALTHBREAK axis=%s level=%u ping_max=%u warn=%u\n", axis, static_cast<unsigned>(level),
+               static_cast<unsigned>(worst), static_cast<unsigned>(pingWarnDeadline()));
+    } else {
+        printk("KIT HEALTHBREAK axis=%s level=none ping_max=%u warn=%u\n", axis, static_cast<unsigned>(worst),
+               static_cast<unsigned>(pingWarnDeadline()));
+    }
+#else
+    (void)level;
+    (void)reached;
+    (void)worst;
+    printk("KIT HEALTHBREAK axis=%s services=absent\n", axis);
+#endif
+}
+
+bool health() {
+#if !defined(CONFIG_KIT_SERVICE_CDH)
+    // The board's profile leaves the services out for this model (its Kconfig.defconfig says why)
+    printk("KIT HEALTH services=absent\n");
+    return true;
+#else
+    // Health pings each entry once per run of its rate group, and warns when
+    // an answer has not come back by its WARN-th run after the ping
+    const U32 warnCycles =
+        PING_WARN_CYCLES * RATE_GROUPS[HEALTH_RATE_GROUP].divisor * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
+    bool answered = true;
+    for (FwIndexType entry = 0; entry < PING_ENTRY_COUNT; entry++) {
+        const PingProbe& probe = pingProbe(entry);
+        const PingRoundTrips& trips = probe.roundTrips();
+        answered = answered && trips.count() > 0;
+        printk("KIT PING name=%s pings=%u held=%u p50=%u p99=%u max=%u warn=%u outstanding=%s\n", pingEntryName(entry),
+               static_cast<unsigned>(trips.count()), static_cast<unsigned>(trips.held()),
+               static_cast<unsigned>(trips.percentile(500)), static_cast<unsigned>(trips.percentile(990)),
+               static_cast<unsigned>(trips.max()), static_cast<unsigned>(warnCycles),
+               probe.outstanding() ? "yes" : "no");
+    }
+    const FwEventIdType base = Kit::health.getIdBase();
+    const U32 warnings = downlink.eventCount(base + HealthIds::PING_WARN);
+    const U32 fatals =
+        downlink.eventCount(base + HealthIds::PING_LATE) + downlink.eventCount(base + HealthIds::PING_WRONG_KEY);
+    printk("KIT HEALTH services=present entries=%u warnings=%u fatals=%u\n", static_cast<unsigned>(PING_ENTRY_COUNT),
+           static_cast<unsigned>(warnings), static_cast<unsigned>(fatals));
+    // Version reports at startup, once (Svc.Version's config(true))
+    const FwEventIdType versionBase = version.getIdBase();
+    const U32 framework = downlink.eventCount(versionBase + VersionIds::FRAMEWORK_VERSION);
+    const U32 project = downlink.eventCount(versionBase + VersionIds::PROJECT_VERSION);
+    printk("KIT VERSION framework_events=%u project_events=%u\n", static_cast<unsigned>(framework),
+           static_cast<unsigned>(project));
+    return answered && warnings == 0 && fatals == 0 && framework == 1 && project == 1;
+#endif
+}
+
 bool heap(const CountingAllocator& allocator) {
     printk(
         "KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "

@@ -56,6 +56,22 @@ struct SweepPoint {
 //! A SWEEP line per rate group over the segment just measured; broke[i]
 //! tells whether group i missed a deadline in it
 void sweepPoint(const SweepPoint& point, bool broke[]);
+//! A PING line per health ping entry (its round trips, in counter cycles,
+//! and health's warning deadline), a HEALTH line (the warnings and fatals
+//! health's events reported) and a VERSION line (the version events that
+//! reached the downlink); true when every entry was answered, none late
+bool health();
+//! Health's side of a load sweep (where the build has health): a segment
+//! starts on every ping probe; sweepHealth() prints the segment's longest
+//! wait for a ping's answer (SWEEPHEALTH) and returns its cycles;
+//! healthBreak() prints the first level of an axis where that wait reached
+//! health's warning deadline (HEALTHBREAK), or none
+void startHealthSegment();
+//! Health's warning deadline in counter cycles (never reached where the
+//! build has no health)
+U32 pingWarnDeadline();
+U32 sweepHealth(const SweepPoint& point);
+void healthBreak(const char* axis, U32 level, bool reached, U32 worst);
 //! DOWNLINK and TICKS lines; true when every packet was decoded and counted
 bool downlinkAndTicks();
 

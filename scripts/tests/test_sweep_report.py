@@ -3,6 +3,7 @@
 points computed and cross-checked, plots and guidance generated."""
 
 from kittools import console, metrics, model, sweep
+from kittools.link import client, serial_sweep
 from kittools.report import analysis, link_report, writer
 from kittools.sizes.memory import Footprint
 
@@ -302,3 +303,14 @@ def test_a_host_timed_axis_breaks_past_a_share_a_deterministic_one_at_any_miss()
     plays = {("uplink", 200): [{"lost": lost, "offered": 240} for lost in (0, 2, 3)],
              ("uplink", 300): [{"lost": lost, "offered": 360} for lost in (9, 16, 12)]}
     assert link_report.delivery_breaking_point(plays, "uplink") == 300
+
+
+def test_health_stops_pinging_the_event_service_with_its_own_command() -> None:
+    """HLTH_PING_ENABLE's arguments as F´ serializes them: the entry's name
+    (a U16 length, then its bytes), then Fw.Enabled as a U8; no frame where
+    the build has no health."""
+    opcodes = {"Kit.health.HLTH_PING_ENABLE": 0x2901}
+    sent = serial_sweep.ping_enable(opcodes, "Kit_eventsPing", enabled=False)
+    assert sent == client.frame(client.command(0x2901, b"\x00\x0eKit_eventsPing\x00"))
+    assert serial_sweep.ping_enable(opcodes, "Kit_eventsPing", enabled=True) != sent
+    assert serial_sweep.ping_enable({}, "Kit_eventsPing", enabled=False) is None

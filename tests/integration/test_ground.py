@@ -11,6 +11,7 @@ on its telemetry, never on the host's clock.
 
 from __future__ import annotations
 
+import time
 from typing import Any
 
 import pytest
@@ -18,6 +19,17 @@ import pytest
 TIMEOUT_S = 10  # whole seconds: the API arms signal.alarm with it
 # Controller::SETPOINT_LIMIT (app/Components/Controller/Controller.hpp)
 SETPOINT_LIMIT = 20000
+# Health's 10 Hz cycles a check watches: a ping unanswered for 3 of them is
+# health's warning (PING_WARN_CYCLES, app/Top/KitTopologyDefs.hpp)
+HEALTH_WATCH_S = 2.0
+
+
+def _services(api: Any, command: str) -> None:
+    """Skips a test of F´'s health and version services on a build whose
+    board profile leaves them out (CONFIG_KIT_SERVICE_CDH: its dictionary
+    has neither; the firmware's record says KIT HEALTH services=absent)."""
+    if command not in api.dictionaries.command_name:
+        pytest.skip("this board's profile leaves F´'s health and version services out for this model")
 
 
 def test_noop_completes_with_its_events(fprime_test_api: Any) -> None:
@@ -56,3 +68,22 @@ def test_telemetry_every_tenth_of_a_second(fprime_test_api: Any) -> None:
     steps = [later - earlier for earlier, later in zip(values, values[1:], strict=False)]
     assert all(abs(gap - 0.1) < 0.002 for gap in gaps), gaps
     assert all(step == 100 for step in steps), steps
+
+
+def test_version_reported_on_command(fprime_test_api: Any) -> None:
+    _services(fprime_test_api, "Kit.version.VERSION")
+    fprime_test_api.send_and_assert_command("Kit.version.VERSION", ["FRAMEWORK"], max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event("Kit.version.FrameworkVersion", timeout=TIMEOUT_S)
+    fprime_test_api.send_and_assert_command("Kit.version.VERSION", ["PROJECT"], max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event("Kit.version.ProjectVersion", timeout=TIMEOUT_S)
+
+
+def test_health_checks_without_warning_at_rest(fprime_test_api: Any) -> None:
+    """Health's checking, turned on again from the ground, pings every entry
+    each 10 Hz cycle; at rest no entry is late (HLTH_PING_WARN) over 20
+    cycles, with the link busy with this test's commands and telemetry."""
+    _services(fprime_test_api, "Kit.health.HLTH_ENABLE")
+    fprime_test_api.send_and_assert_command("Kit.health.HLTH_ENABLE", ["ENABLED"], max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event("Kit.health.HLTH_CHECK_ENABLE", ["ENABLED"], timeout=TIMEOUT_S)
+    time.sleep(HEALTH_WATCH_S)
+    fprime_test_api.assert_event_count(0, "Kit.health.HLTH_PING_WARN")

@@ -15,8 +15,9 @@ from kittools.workspace import VARIANTS, KitError, board_dir_name
 # What to shrink when a resource is short, from docs/porting.md, "Memory budget"
 _LEVERS = {
     "flash": "F´'s configuration (app/config/) and the components built in",
-    "RAM": "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE (app/prj.conf), the queue depths (app/Top/instances.fpp), "
-           "the stack table (Tables.fpp), F´'s configuration (app/config/)",
+    "RAM": "F´'s health and version services (CONFIG_KIT_SERVICE_CDH=n in the board's Kconfig.defconfig, "
+           "about 8 KiB), CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE (app/Kconfig), the queue depths "
+           "(app/Top/instances.fpp), the stack table (Tables.fpp), F´'s configuration (app/config/)",
 }
 
 

@@ -169,6 +169,30 @@ class Driver:
         return self.sweep_lines(axis, traffic.point)
 
 
+# F´'s EventManager asserts when a health ping finds its queue full (its
+# pingIn is an asserting async port; its LogRecv drops what a full queue
+# cannot take). The downlink axis floods that queue by design, and on the
+# models that serve one message per task per tick (baremetal, its budgeted
+# policy) the ping then stopped the deployment (qemu_cortex_m3, 2026-12-04:
+# EventManagerComponentAc.cpp's queue-full assert in the axis' first play of
+# point 33, both models). So, as an operator would before flooding the event service, the
+# sweep has health stop pinging it for the axis (F´'s HLTH_PING_ENABLE) and
+# ping it again after; docs/design.md says why.
+EVENTS_PING_ENTRY = "Kit_eventsPing"
+ENTRY_LENGTH = struct.Struct(">H")  # FwSizeStoreType, a string argument's length
+ENABLED = struct.Struct(">B")  # Fw.Enabled
+
+
+def ping_enable(opcodes: dict[str, int], entry: str, enabled: bool) -> bytes | None:
+    """The frame of health's HLTH_PING_ENABLE for `entry`, or None where
+    the build has no health (its board's profile leaves it out)."""
+    opcode = opcodes.get("Kit.health.HLTH_PING_ENABLE")
+    if opcode is None:
+        return None
+    name = entry.encode()
+    return frame(command(opcode, ENTRY_LENGTH.pack(len(name)) + name + ENABLED.pack(int(enabled))))
+
+
 def run(build: Path, repeats: int = REPEATS) -> Outcome:
     """Boot a ground build and sweep every axis on its link, each level `repeats` times."""
     link_info = ground.link_of(build)
@@ -196,6 +220,9 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
             # before the segment is requested (no wait for its event, which a
             # flooded events queue may drop)
             unload = frame(command(opcodes["Kit.load.SET_DOWNLINK"], U32.pack(0)))
+            stop_pinging = ping_enable(opcodes, EVENTS_PING_ENTRY, enabled=False)
+            if stop_pinging is not None:
+                link.send(stop_pinging)
             for level in DOWNLINK.levels:
                 for repeat in range(repeats):
                     traffic = PointTraffic(DOWNLINK.name, next(points), level, repeat)
@@ -210,6 +237,9 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
                     # point and the newest after it that never arrived were lost
                     traffic.packets_lost = driver.newest_packet() - newest_before - traffic.packets_received
                     outcome.traffic.append(traffic)
+            ping_again = ping_enable(opcodes, EVENTS_PING_ENTRY, enabled=True)
+            if ping_again is not None:
+                link.send(ping_again)
             for level in NOISE.levels:
                 for repeat in range(repeats):
                     traffic = PointTraffic(NOISE.name, next(points), level, repeat)

@@ -77,6 +77,11 @@ def record_tables(data: Results) -> list[Table]:
                      [("name", "context"), ("runs", "runs"), ("avg", "avg"), ("max", "max"),
                       ("cpu_permille", "CPU %")]),
         record_table(data, "STACK", "Stacks (bytes)", [("name", "stack"), ("size", "size"), ("used", "used")]),
+        record_table(data, "PING", "Svc.Health's pings, round trip per entry (counter cycles, timed by the kit's "
+                                   "probe on each connection; p50 and p99 over the last `held` pings, max over all; "
+                                   "warn: health's WARNING_HI deadline, 3 of its 10 Hz cycles)",
+                     [("name", "entry"), ("pings", "pings"), ("held", "held"), ("p50", "p50"), ("p99", "p99"),
+                      ("max", "max"), ("warn", "warn")]),
         record_table(data, "SCHED", "The time-budgeted policy's task table (counter cycles; Betaflight's "
                                     "scheduler table: anticipated slice, turns deferred, slices run on an open tick "
                                     "though they did not fit, slices that ended after the next tick was due; the "
@@ -84,6 +89,12 @@ def record_tables(data: Results) -> list[Table]:
                      [("name", "task"), ("critical", "critical"), ("anticipated", "anticipated"),
                       ("deferrals", "deferrals"), ("expedited", "expedited"), ("late", "late"), ("guard", "guard"),
                       ("guard_max", "guard max")]),
+        record_table(data, "HEALTHBREAK", "Health's warning on the load axes: the first load at which a ping "
+                                          "waited health's warning deadline for its answer (none: not on the "
+                                          "axis), beside the rate groups' breaking points; the longest wait on "
+                                          "the axis (counter cycles)",
+                     [("axis", "axis"), ("level", "first level (us)"), ("ping_max", "longest wait"),
+                      ("warn", "warning deadline")]),
         record_table(data, "PROBE", "Instrumentation cost (counter cycles per rate-group cycle)",
                      [("cycles_per_cycle", "cycles")]),
         record_table(data, "STAGE", "The fastest rate group's dispatch, stage by stage (counter cycles from the "

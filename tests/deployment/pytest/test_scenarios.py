@@ -41,7 +41,8 @@ SOAK_TIMEOUT_PER_MINUTE_S = 120.0
 # baseline), nothing was allocated after init, the uplinked NO_OP completed
 # OK and its event reached the downlink, the 1 kHz group's queue held at most
 # the one pending cycle, or two where it slipped (its QUEUE line: the sizing
-# advice reads every queue's high-water mark from these), the downlink's
+# advice reads every queue's high-water mark from these), health's pings
+# all answered with no warning where the build has health, the downlink's
 # and the event service's queues dropped nothing, the 1 kHz group's
 # dispatch stage by stage (DispatchStages.hpp), and the verdict.
 def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
@@ -62,11 +63,19 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
         r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
         r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
         r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",
+        # F´'s health and version services, where the board's profile has
+        # them (CONFIG_KIT_SERVICE_CDH): every ping entry answered (the
+        # firmware fails the run on one never answered), no warning at
+        # rest, the versions reported once
+        HEALTH_AT_REST,
         *([] if passive else [r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12] dropped=0$"]),
         # the downlink and the event service lost nothing to a full queue
         EVENTS_KEPT,
         r"KIT QUEUE name=comQueue depth=[1-9][0-9]* slot_bytes=[1-9][0-9]* high_water=[0-9]+ dropped=0$",
     ]
+
+
+HEALTH_AT_REST = (r"KIT HEALTH services=(absent|present entries=[1-9][0-9]* warnings=0 fatals=0)$")
 
 
 # Stands for the build's icount shift (CONFIG_QEMU_ICOUNT_SHIFT; a real
@@ -127,6 +136,12 @@ ASSERT = [
     r"KIT HALT reason=kernel_panic code=4 context=\w+ expected=yes",
 ]
 
+# Health's side of the sweep, where the build has health: the longest a ping
+# waited for its answer on each axis, and the first level where that reached
+# health's warning deadline (or none)
+HEALTH_ON_THE_LOAD_AXES = (r"KIT HEALTHBREAK axis=slice (services=absent|level=([0-9]+|none) ping_max=[0-9]+ "
+                           r"warn=[1-9][0-9]*)$")
+
 # Background-load sweep: at zero load no group misses a deadline; the
 # cooperative loop must break its 1 kHz group within the sweep (a slice
 # longer than the period cannot be preempted), the preemptive one must not;
@@ -140,6 +155,7 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
             r"KIT BANNER variant=baremetal ",
             r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz ",
             r"KIT BREAK axis=slice rg=rg1kHz level=[0-9]+ unit=us$",
+            HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK .* dropped=0",
             r"KIT END variant=baremetal result=PASS",
         ],
@@ -159,6 +175,7 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
             r"KIT BANNER variant=baremetal_budgeted ",
             r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz .* load_dropped=0",
             r"KIT BREAK axis=slice rg=rg1kHz level=([0-9]+|none) unit=us$",
+            HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK ",
             r"KIT SCHED name=rg1kHz critical=yes ",
             r"KIT END variant=baremetal_budgeted result=PASS",
@@ -175,6 +192,7 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
             r"KIT BANNER variant=baremetal_passive ",
             r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz ",
             r"KIT BREAK axis=slice rg=rg1kHz level=([0-9]+|none) unit=us$",
+            HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK .* dropped=0",
             r"KIT END variant=baremetal_passive result=PASS",
         ],
@@ -189,6 +207,7 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
             r"KIT BANNER variant=rtos ",
             r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz .* slips=0 late_starts=0 ",
             r"KIT BREAK axis=slice rg=rg1kHz level=none unit=us",
+            HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK .* dropped=0",
             r"KIT END variant=rtos result=PASS",
         ],
