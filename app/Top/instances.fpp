@@ -135,7 +135,7 @@ module Kit {
   }
 
   # Health's pings, timed: one probe per ping entry (the kit's instrument,
-  # app/Components/PingProbe); the entries are in app/Top/topology.fpp
+  # app/Components/PingProbe); the entries are in app/Top/services/
   instance eventsPing: Kit.PingProbe base id 0x2B00
   instance tlmSendPing: Kit.PingProbe base id 0x2B10
   instance rg1kHzPing: Kit.PingProbe base id 0x2B20
