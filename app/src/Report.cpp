@@ -245,10 +245,7 @@ bool health() {
     printk("KIT HEALTH services=absent\n");
     return true;
 #else
-    // Health pings each entry once per run of its rate group, and warns when
-    // an answer has not come back by its WARN-th run after the ping
-    const U32 warnCycles =
-        PING_WARN_CYCLES * RATE_GROUPS[HEALTH_RATE_GROUP].divisor * (TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
+    const U32 warnCycles = pingWarnDeadline();
     bool answered = true;
     for (FwIndexType entry = 0; entry < PING_ENTRY_COUNT; entry++) {
         const PingProbe& probe = pingProbe(entry);
