@@ -110,6 +110,14 @@ macro(kit_deployment)
     set(KIT_MODEL_DIR "${KIT_ROOT}/${CONFIG_KIT_MODEL_NAME}")
     include("${KIT_MODEL_DIR}/model.cmake")
 
+    # F´'s file system, the same in every model: fprime-baremetal's MicroFs
+    # in RAM (app/src/RamFs.cpp), or none
+    if(CONFIG_KIT_RAMFS)
+        set(KIT_FILE_IMPLEMENTATION Os_File_Baremetal_MicroFs)
+    else()
+        set(KIT_FILE_IMPLEMENTATION Os_File_Stub)
+    endif()
+
     # Every scenario, and the choice among them (app/scenarios/Scenarios.cpp)
     file(GLOB KIT_SCENARIO_SOURCES CONFIGURE_DEPENDS "${KIT_ROOT}/app/scenarios/*.cpp")
 
@@ -125,11 +133,13 @@ macro(kit_deployment)
             ${KIT_SCENARIO_SOURCES}
             "${KIT_ROOT}/app/src/CountingAllocator.cpp"
             "${KIT_ROOT}/app/src/HeapMonitor.cpp"
+            "${KIT_ROOT}/app/src/RamFs.cpp"
+            "${KIT_ROOT}/app/src/Restart.cpp"
             ${KIT_MODEL_SOURCES}
         DEPENDS
             app_Top
         CHOOSES_IMPLEMENTATIONS
-            Os_File_Stub  # no file system in either model
+            ${KIT_FILE_IMPLEMENTATION}
             ${KIT_MODEL_IMPLEMENTATIONS}
     )
     target_include_directories(app PRIVATE "${KIT_ROOT}")

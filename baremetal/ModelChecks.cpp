@@ -17,6 +17,7 @@
 #include <zephyr/autoconf.h>
 
 #include <fprime-baremetal/Os/TaskRunner/TaskRunner.hpp>
+#include "baremetal/Os/TimedTask.hpp"
 
 namespace Kit {
 namespace {
@@ -24,6 +25,9 @@ namespace {
 // Every active instance is one task of the TaskRunner's fixed table
 static_assert(ACTIVE_INSTANCE_COUNT <= Os::Baremetal::TASK_CAPACITY,
               "more active instances than fprime-baremetal's TaskRunner holds (TASK_CAPACITY)");
+// ... and one timed slice record of the model's (baremetal/Os/TimedTask.hpp)
+static_assert(ACTIVE_INSTANCE_COUNT <= TimedTask::MAX_TASKS,
+              "more active instances than the model's timed tasks hold (TimedTask::MAX_TASKS)");
 
 #if defined(CONFIG_KIT_BAREMETAL_POLICY_BUDGETED)
 // The budgeted policy never defers a task of at least this priority: the

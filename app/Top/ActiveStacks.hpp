@@ -26,6 +26,9 @@ constexpr FwSizeType ACTIVE_STACKS[] = {
     Stacks::cmdDisp,  // the passive dispatcher runs on its sender's stack
 #endif
     Stacks::events,  Stacks::tlmSend, Stacks::load,   Stacks::comQueue,
+#if defined(CONFIG_KIT_SERVICE_PARAMS)
+    Stacks::prmDb,  // the parameter database (app/Top/services/)
+#endif
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
 

@@ -34,6 +34,9 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
     {"tlmSend", &tlmSend, sizeof(tlmSend), &tlmSend},
     {"load", &load, sizeof(load), &load},
     {"comQueue", &comQueue, sizeof(comQueue), &comQueue},
+#if defined(CONFIG_KIT_SERVICE_PARAMS)
+    {"prmDb", &prmDb, sizeof(prmDb), &prmDb},
+#endif
 };
 
 #if defined(CONFIG_KIT_SERVICE_CDH)
@@ -51,6 +54,9 @@ const PingEntry PING_ENTRIES[PING_ENTRY_COUNT] = {
 #endif
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
     {"rg1kHz", &rg1kHzPing},   {"rg100Hz", &rg100HzPing}, {"rg10Hz", &rg10HzPing},
+#endif
+#if defined(CONFIG_KIT_SERVICE_PARAMS)
+    {"prmDb", &prmDbPing},
 #endif
 };
 }  // namespace
@@ -243,6 +249,9 @@ void setupTopology(const TopologyState& state) {
     regCommands();
     configComponents(state);
     configureTopology(state);
+    // The parameter database reads its file, then each component takes its
+    // parameters from it (F´'s order: Svc/Subtopologies/FileHandling)
+    readParameters();
     loadParameters();
     startTasks(state);
 }

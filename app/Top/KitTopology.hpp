@@ -34,7 +34,12 @@ constexpr FwSizeType ACTIVE_DISPATCHERS = 0;
 #else
 constexpr FwSizeType ACTIVE_DISPATCHERS = 1;
 #endif
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS;
+#if defined(CONFIG_KIT_SERVICE_PARAMS)
+constexpr FwSizeType PARAMETER_DATABASES = 1;
+#else
+constexpr FwSizeType PARAMETER_DATABASES = 0;
+#endif
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + PARAMETER_DATABASES;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr
@@ -59,7 +64,7 @@ constexpr FwSizeType PINGED_RATE_GROUPS = 3;
 #else
 constexpr FwSizeType PINGED_RATE_GROUPS = 0;
 #endif
-constexpr FwIndexType PING_ENTRY_COUNT = 2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS;
+constexpr FwIndexType PING_ENTRY_COUNT = 2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + PARAMETER_DATABASES;
 //! Name of ping entry `entry`
 const char* pingEntryName(FwIndexType entry);
 //! The probe timing ping entry `entry`'s round trips

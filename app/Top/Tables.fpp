@@ -35,7 +35,8 @@ module Kit {
     constant comQueue = 5
     constant tlmSend = 4
     constant events = 3
-    constant load = 2
+    constant prmDb = 2
+    constant load = 1
   }
 
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
@@ -54,6 +55,7 @@ module Kit {
     constant tlmSend = 2048
     constant comQueue = 2048
     constant load = 2048
+    constant prmDb = 2048
   }
 
 }

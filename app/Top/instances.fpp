@@ -38,6 +38,20 @@ module Kit {
     @ Health is queued: its Run (10 Hz) first takes the answers that came
     @ back since the last one, at most one per ping entry, and a command
     constant $health = HealthPingPorts + 2
+    @ The parameter database: a component's save (its parameter's
+    @ _PRM_SAVE command), the database's own commands and health's ping
+    constant prmDb = 4
+  }
+
+  @ The RAM file system (fprime-baremetal's MicroFs, app/src/RamFs.cpp)
+  @ names a file by its bin and slot: one bin of CONFIG_KIT_RAMFS_FILES
+  @ files of CONFIG_KIT_RAMFS_FILE_SIZE bytes
+  module RamFs {
+    @ The parameter database's file (in the dictionary: the ground names
+    @ it in PRM_LOAD_FILE)
+    dictionary constant parameterFile = "/bin0/file0"
+    @ A file a ground test may write and load (PRM_LOAD_FILE)
+    dictionary constant scratchFile = "/bin0/file1"
   }
 
   @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:
@@ -142,6 +156,26 @@ module Kit {
   instance rg100HzPing: Kit.PingProbe base id 0x2B30
   instance rg10HzPing: Kit.PingProbe base id 0x2B40
   instance cmdDispPing: Kit.PingProbe base id 0x2B50
+  instance prmDbPing: Kit.PingProbe base id 0x2B60
+
+  @ Where there is no parameter database: every parameter keeps its default
+  instance paramDefaults: Kit.ParamDefaults base id 0x2D00
+
+  @ F´'s parameter database (FileHandling's prmDb), its file on the kit's
+  @ RAM file system (app/src/RamFs.cpp): read at start-up, before the
+  @ components load their parameters, and written by PRM_SAVE_FILE
+  instance prmDb: Svc.PrmDb base id 0x2C00 \
+    queue size Queues.prmDb \
+    stack size Stacks.prmDb \
+    priority Priorities.prmDb \
+  {
+    phase Fpp.ToCpp.Phases.configComponents """
+    Kit::prmDb.configure(Kit::RamFs::parameterFile);
+    """
+    phase Fpp.ToCpp.Phases.readParameters """
+    Kit::prmDb.readParamFile();
+    """
+  }
 
   instance rateGroupDriver: Svc.RateGroupDriver base id 0x0400
 

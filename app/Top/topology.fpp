@@ -43,6 +43,11 @@ module Kit {
     import DispatcherHealth
     import RateGroupHealth
 
+    # F´'s parameter database on the RAM file system, with the components
+    # whose parameters it keeps, and its ping (app/Top/services/)
+    import ParamServices
+    import ParamHealth
+
     command connections instance cmdDisp
     event connections instance events
     telemetry connections instance tlmSend

@@ -13,7 +13,7 @@ constant PassiveRateGroupOutputPorts = 11
 constant RateGroupDriverRateGroupPorts = 3
 
 @ Components that own commands (cmdDisp, events, controller, load, timing,
-@ faults, health, version + spare)
+@ faults, health, version, prmDb + spare)
 constant CmdDispatcherComponentCommandPorts = 10
 
 @ Command sources: the scripted uplink (index 0), the ground link (1)
@@ -23,8 +23,9 @@ constant SeqDispatcherSequencerPorts = 1
 constant CmdSplitterPorts = CmdDispatcherSequencePorts
 constant StaticMemoryAllocations = 1
 @ Health's ping entries: events, tlmSend, the active dispatcher, the
-@ active rate groups where the model pings them (app/Top/topology.fpp)
-constant HealthPingPorts = 6
+@ active rate groups where the model pings them, the parameter database
+@ (app/Top/services/)
+constant HealthPingPorts = 7
 constant FileDownCompletePorts = 1
 @ Downlink queues: events, telemetry
 constant ComQueueComPorts = 2

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Dispatch table: one entry per registered opcode. The dictionary has 16
-// commands, and the table holds exactly those (`scripts/kit sizing`: 32
-// entries left 16 spare, 12 B each, 192 B). The dispatcher asserts at
+// Dispatch table: one entry per registered opcode, and exactly the
+// dictionary's commands (`scripts/kit sizing`: 32 entries for 16 commands
+// left 16 spare, 12 B each, 192 B). The dispatcher asserts at
 // registration when a command has no entry, so a new command needs a larger
 // table: `scripts/kit test` says so first, from the build's dictionary
 // (kittools.sizes.sizing), before anything boots.
@@ -10,11 +10,19 @@
 #define CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 
 enum {
+    //! The kit's own, and the controller's parameters' set and save
+    KIT_DEPLOYMENT_COMMANDS = 22,
 #if defined(CONFIG_KIT_SERVICE_CDH)
-    CMD_DISPATCHER_DISPATCH_TABLE_SIZE = 21,  //!< Svc.Health's 3 and Svc.Version's 2 among them
+    KIT_CDH_COMMANDS = 5,  //!< Svc.Health's 3 and Svc.Version's 2
 #else
-    CMD_DISPATCHER_DISPATCH_TABLE_SIZE = 16,
+    KIT_CDH_COMMANDS = 0,
 #endif
+#if defined(CONFIG_KIT_SERVICE_PARAMS)
+    KIT_PARAM_COMMANDS = 3,  //!< Svc.PrmDb's
+#else
+    KIT_PARAM_COMMANDS = 0,
+#endif
+    CMD_DISPATCHER_DISPATCH_TABLE_SIZE = KIT_DEPLOYMENT_COMMANDS + KIT_CDH_COMMANDS + KIT_PARAM_COMMANDS,
     CMD_DISPATCHER_SEQUENCER_TABLE_SIZE = 4,
 };
 

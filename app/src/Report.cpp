@@ -10,6 +10,7 @@
 #include "app/Top/GeneratedIds.hpp"
 #include "app/Top/KitTopology.hpp"
 #include "app/src/HeapMonitor.hpp"
+#include "app/src/RamFs.hpp"
 
 #include <zephyr/device.h>
 #include <zephyr/devicetree.h>
@@ -157,6 +158,17 @@ void linkReady() {
     printk("KIT LINK ready uart=%s baud=%u uart_errors=%s dictionary=%s\n",
            DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name, static_cast<unsigned>(linkBaudRate()),
            linkUartErrorsReported() ? "reported" : "unsupported", KIT_DICTIONARY_ID);
+}
+
+void fileSystem(RamFs::Mount mount) {
+#if defined(CONFIG_KIT_RAMFS)
+    printk("KIT RAMFS mount=%s files=%u file_bytes=%u bytes=%u\n", mount == RamFs::Mount::KEPT ? "kept" : "formatted",
+           static_cast<unsigned>(CONFIG_KIT_RAMFS_FILES), static_cast<unsigned>(CONFIG_KIT_RAMFS_FILE_SIZE),
+           static_cast<unsigned>(RamFs::regionBytes()));
+#else
+    FW_ASSERT(mount == RamFs::Mount::ABSENT, static_cast<FwAssertArgType>(mount));
+    printk("KIT RAMFS mount=absent\n");
+#endif
 }
 
 bool commands(const Uplink::Frame* frames, FwSizeType count) {

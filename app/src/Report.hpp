@@ -12,6 +12,7 @@
 #include <Fw/FPrimeBasicTypes.hpp>
 #include "app/Components/Uplink/Uplink.hpp"
 #include "app/src/CountingAllocator.hpp"
+#include "app/src/RamFs.hpp"
 #include "app/src/Variant.hpp"
 
 namespace Kit {
@@ -23,6 +24,9 @@ void banner();
 
 //! The LINK line: the ground link is up, on the board's link UART
 void linkReady();
+
+//! How the RAM file system was found at mount (KIT RAMFS)
+void fileSystem(RamFs::Mount mount);
 
 //! RG, TASK and HIST lines of every rate group over a segment of `ticks`
 //! ticks; true when each ran exactly its cycles, without slips

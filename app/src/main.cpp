@@ -15,6 +15,7 @@
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/CountingAllocator.hpp"
 #include "app/src/HeapMonitor.hpp"
+#include "app/src/RamFs.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Variant.hpp"
 
@@ -33,6 +34,7 @@ int main() {
     Kit::Variant::prepareStacks();
     Os::init();
     s_allocator.registerForFprime();
+    Kit::Report::fileSystem(Kit::RamFs::mount());
     const Kit::TopologyState state = {s_allocator};
     Kit::setupTopology(state);
     Kit::HeapMonitor::markInitialized();

@@ -27,7 +27,9 @@ struct SliceRecord {
 
 class TimedTask final : public Os::Baremetal::BaremetalTask {
   public:
-    static constexpr FwSizeType MAX_TASKS = 8;
+    //! The kit's table of timed tasks (the TaskRunner's own holds 100): the
+    //! topology's active instances must fit (baremetal/ModelChecks.cpp)
+    static constexpr FwSizeType MAX_TASKS = 10;
 
     Status start(const Arguments& arguments) override;
 

@@ -27,8 +27,10 @@ MODELS = tuple(sorted(path.parent.name for path in KIT_ROOT.glob("*/Kconfig.mode
 
 #: The OS layers the models take from their upstreams (west.yml): a header of
 #: theirs is a model's header too. (fprime-baremetal's components, such as
-#: Svc/PassiveCmdDispatcher, are capabilities: app/Kconfig offers them.)
+#: Svc/PassiveCmdDispatcher, are capabilities: app/Kconfig offers them; so is
+#: its MicroFs, the RAM file system every model uses: app/src/RamFs.cpp.)
 UPSTREAM_MODEL_HEADERS = ("fprime-baremetal/Os/", "fprime-zephyr/Os/")
+SHARED_UPSTREAM_HEADERS = ("fprime-baremetal/Os/Baremetal/MicroFs/",)
 
 _C_SUFFIXES = {".c", ".h", ".cpp", ".hpp"}
 _HASH_COMMENT_SUFFIXES = {".cmake", ".conf"}
@@ -83,7 +85,8 @@ def model_symbol_pattern() -> re.Pattern[str]:
 def model_include_pattern() -> re.Pattern[str]:
     folders = "|".join(re.escape(f"{model}/") for model in MODELS)
     upstream = "|".join(re.escape(prefix) for prefix in UPSTREAM_MODEL_HEADERS)
-    return re.compile(rf'^[ \t]*#[ \t]*include[ \t]*[<"](?:{folders}|{upstream})', re.MULTILINE)
+    shared = "|".join(re.escape(prefix) for prefix in SHARED_UPSTREAM_HEADERS)
+    return re.compile(rf'^[ \t]*#[ \t]*include[ \t]*[<"](?!{shared})(?:{folders}|{upstream})', re.MULTILINE)
 
 
 def findings(root: Path, base: Path = KIT_ROOT) -> list[str]:
@@ -133,6 +136,7 @@ def test_a_file_that_knows_a_model_is_found(tmp_path, name, text, expected):
 
 
 @pytest.mark.parametrize("text", [
+    "#include <fprime-baremetal/Os/Baremetal/MicroFs/MicroFs.hpp>\n",  # every model's file system
     "// the baremetal TaskRunner, CONFIG_KIT_MODEL_BAREMETAL\n",
     "/* #include \"rtos/Os/PriorityMap.hpp\" */\n",
     "#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)\n#endif\n",

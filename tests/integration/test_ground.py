@@ -87,3 +87,129 @@ def test_health_checks_without_warning_at_rest(fprime_test_api: Any) -> None:
     fprime_test_api.assert_event("Kit.health.HLTH_CHECK_ENABLE", ["ENABLED"], timeout=TIMEOUT_S)
     time.sleep(HEALTH_WATCH_S)
     fprime_test_api.assert_event_count(0, "Kit.health.HLTH_PING_WARN")
+
+
+# A warm restart's answer, the restart (RESTART_DELAY_CYCLES of the 10 Hz
+# group: Faults.hpp), the boot and the first events through the link
+RESTART_S = 10
+
+
+def _parameter_file(api: Any) -> str:
+    """The parameter database's file on the RAM file system (a dictionary
+    constant); skips a test of the database on a build whose board profile
+    leaves it out (CONFIG_KIT_SERVICE_PARAMS: the record says KIT RAMFS
+    mount=absent)."""
+    if "Kit.prmDb.PRM_SAVE_FILE" not in api.dictionaries.command_name:
+        pytest.skip("this board's profile leaves F´'s parameter database out for this model")
+    return str(api.dictionaries.constant_name["Kit.RamFs.parameterFile"])
+
+
+def _gains(api: Any) -> tuple[int, int]:
+    """The controller's default gains (shifts), from the dictionary."""
+    constants = api.dictionaries.constant_name
+    return int(constants["Kit.ControllerGains.kpShift"]), int(constants["Kit.ControllerGains.kiShift"])
+
+
+def _save_kp(api: Any, kp: int) -> None:
+    """Sets the controller's proportional gain, saves it in the database,
+    and the database in its file."""
+    _, ki = _gains(api)
+    api.send_and_assert_command("Kit.controller.KP_SHIFT_PRM_SET", [kp], max_delay=TIMEOUT_S)
+    api.assert_event("Kit.controller.GainsApplied", [kp, ki], timeout=TIMEOUT_S)
+    api.send_and_assert_command("Kit.controller.KP_SHIFT_PRM_SAVE", max_delay=TIMEOUT_S)
+    api.send_and_assert_command("Kit.prmDb.PRM_SAVE_FILE", max_delay=TIMEOUT_S)
+    api.assert_event("Kit.prmDb.PrmFileSaveComplete", timeout=TIMEOUT_S)
+
+
+def _restart(api: Any) -> None:
+    """A warm restart from the ground; returns once the deployment is back."""
+    api.send_and_assert_command("Kit.faults.RESTART", max_delay=TIMEOUT_S)
+    api.assert_event("Kit.faults.RestartArmed", timeout=TIMEOUT_S)
+    api.assert_event("Kit.controller.GainsApplied", start="NOW", timeout=RESTART_S)
+
+
+def test_parameter_set_saved_and_reloaded(fprime_test_api: Any) -> None:
+    """A gain set from the ground and saved to the file is loaded back from
+    it (PRM_LOAD_FILE, then PRM_COMMIT_STAGED) after the ground changed it
+    again without saving."""
+    api = fprime_test_api
+    parameter_file = _parameter_file(api)
+    kp_default, ki = _gains(api)
+    try:
+        _save_kp(api, kp_default + 1)
+        api.send_and_assert_command("Kit.controller.KP_SHIFT_PRM_SET", [kp_default + 2], max_delay=TIMEOUT_S)
+        api.assert_event("Kit.controller.GainsApplied", [kp_default + 2, ki], timeout=TIMEOUT_S)
+        api.send_and_assert_command("Kit.prmDb.PRM_LOAD_FILE", [parameter_file, "RESET"], max_delay=TIMEOUT_S)
+        api.assert_event("Kit.prmDb.PrmFileLoadComplete", ["STAGING", 1, 1, 0], timeout=TIMEOUT_S)
+        api.send_and_assert_command("Kit.prmDb.PRM_COMMIT_STAGED", max_delay=TIMEOUT_S)
+        api.assert_event("Kit.prmDb.PrmDbCommitComplete", timeout=TIMEOUT_S)
+        # A committed database reaches a component at its next read: the
+        # component's own set is what changes its value in the run
+        api.send_and_assert_command("Kit.controller.KP_SHIFT_PRM_SET", [kp_default + 1], max_delay=TIMEOUT_S)
+        api.assert_event("Kit.controller.GainsApplied", [kp_default + 1, ki], timeout=TIMEOUT_S)
+    finally:
+        _save_kp(api, kp_default)
+
+
+def test_parameter_read_back_after_warm_restart(fprime_test_api: Any) -> None:
+    """The saved gain is in effect after a warm restart of the same run: the
+    RAM file system kept its file (app/src/RamFs.cpp), the database read it
+    at start-up, and the controller loaded it."""
+    api = fprime_test_api
+    _parameter_file(api)
+    kp_default, ki = _gains(api)
+    try:
+        _save_kp(api, kp_default + 1)
+        _restart(api)
+        api.assert_event("Kit.prmDb.PrmFileLoadComplete", ["ACTIVE", 1, 1, 0], timeout=RESTART_S)
+        api.assert_event("Kit.controller.GainsApplied", [kp_default + 1, ki], timeout=RESTART_S)
+        api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+    finally:
+        _save_kp(api, kp_default)
+
+
+# Damage to a saved parameter file (one record: delimiter, record size, id,
+# value; F´'s PrmDb) and the read stage where F´'s PrmDb rejects it
+PARAMETER_FILE_DAMAGE = [
+    (("FLIP", 0), "DELIMITER_VALUE"),  # the record's delimiter byte
+    (("FLIP", 1), "RECORD_SIZE_VALUE"),  # the record size's top byte
+    (("TRUNCATE", 3), "RECORD_SIZE_SIZE"),  # the record size cut short
+    (("TRUNCATE", 8), "PARAMETER_ID_SIZE"),  # the id cut short
+]
+
+
+@pytest.mark.parametrize(("damage", "stage"), PARAMETER_FILE_DAMAGE, ids=[s for _, s in PARAMETER_FILE_DAMAGE])
+def test_damaged_parameter_file_rejected(fprime_test_api: Any, damage: tuple[str, int], stage: str) -> None:
+    """A damaged parameter file is refused with PrmDb's read error and its
+    load abandoned; the gains in effect stay, and the deployment goes on."""
+    api = fprime_test_api
+    parameter_file = _parameter_file(api)
+    kp_default, ki = _gains(api)
+    try:
+        _save_kp(api, kp_default + 1)
+        api.send_and_assert_command("Kit.faults.CORRUPT_FILE", [parameter_file, *damage], max_delay=TIMEOUT_S)
+        api.assert_event("Kit.faults.FileCorrupted", timeout=TIMEOUT_S)
+        api.send_command("Kit.prmDb.PRM_LOAD_FILE", [parameter_file, "RESET"])
+        api.assert_event("Kit.prmDb.PrmFileReadError", [stage, 0, None], timeout=TIMEOUT_S)
+        api.assert_event("Kit.prmDb.PrmDbFileLoadFailed", timeout=TIMEOUT_S)
+        api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+    finally:
+        _save_kp(api, kp_default)
+
+
+def test_damaged_parameter_file_at_restart_leaves_defaults(fprime_test_api: Any) -> None:
+    """A parameter file damaged before a warm restart is refused at start-up
+    with PrmDb's read error: the controller starts on its defaults, and
+    nothing halts."""
+    api = fprime_test_api
+    parameter_file = _parameter_file(api)
+    kp_default, ki = _gains(api)
+    try:
+        _save_kp(api, kp_default + 1)
+        api.send_and_assert_command("Kit.faults.CORRUPT_FILE", [parameter_file, "FLIP", 0], max_delay=TIMEOUT_S)
+        _restart(api)
+        api.assert_event("Kit.prmDb.PrmFileReadError", ["DELIMITER_VALUE", 0, None], timeout=RESTART_S)
+        api.assert_event("Kit.controller.GainsApplied", [kp_default, ki], timeout=RESTART_S)
+        api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+    finally:
+        _save_kp(api, kp_default)

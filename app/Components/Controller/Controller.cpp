@@ -7,6 +7,7 @@
 // Cortex-M3 control loop, bit-for-bit repeatable under QEMU icount.
 // ======================================================================
 #include "app/Components/Controller/Controller.hpp"
+#include "app/Components/Controller/FppConstantsAc.hpp"
 
 namespace Kit {
 
@@ -14,8 +15,6 @@ namespace {
 constexpr I32 NOISE = 64;        // sensor noise amplitude, counts
 constexpr I32 PLANT_SHIFT = 5;   // plant time constant: 32 steps
 constexpr I32 FILTER_SHIFT = 3;  // filter time constant: 8 steps
-constexpr I32 KP_SHIFT = 1;      // proportional gain 1/2
-constexpr I32 KI_SHIFT = 6;      // integral gain 1/64
 constexpr I32 INTEGRAL_LIMIT = 1 << 20;
 
 I32 clamp(I32 value, I32 limit) {
@@ -31,7 +30,9 @@ Controller::Controller(const char* const compName)
       m_integral(0),
       m_output(0),
       m_rng(12345u),
-      m_cycles(0) {}
+      m_cycles(0),
+      m_kpShift(ControllerGains::kpShift),
+      m_kiShift(ControllerGains::kiShift) {}
 
 Controller::~Controller() {}
 
@@ -49,7 +50,7 @@ void Controller::step() {
     // PI with anti-windup
     const I32 error = m_setpoint - m_filtered;
     m_integral = clamp(m_integral + error, INTEGRAL_LIMIT);
-    m_output = clamp((error >> KP_SHIFT) + (m_integral >> KI_SHIFT), OUTPUT_LIMIT);
+    m_output = clamp((error >> m_kpShift) + (m_integral >> m_kiShift), OUTPUT_LIMIT);
     m_cycles++;
 }
 
@@ -78,6 +79,39 @@ void Controller::SET_SETPOINT_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, I32 se
     m_setpoint = setpoint;
     this->log_ACTIVITY_HI_SetpointChanged(setpoint);
     this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
+}
+
+// The gains change between two steps: the parameter hooks run in the
+// commanding context (or at start-up), the step in the 1 kHz group's, and
+// each shift is one byte, written whole.
+void Controller::parametersLoaded() {
+    (void)this->applyGains();
+    this->log_ACTIVITY_HI_GainsApplied(m_kpShift, m_kiShift);
+}
+
+void Controller::parameterUpdated(FwPrmIdType id) {
+    (void)id;
+    if (this->applyGains()) {
+        this->log_ACTIVITY_HI_GainsApplied(m_kpShift, m_kiShift);
+    }
+}
+
+bool Controller::applyGains() {
+    Fw::ParamValid kpValid;
+    Fw::ParamValid kiValid;
+    const U8 kpShift = this->paramGet_KP_SHIFT(kpValid);
+    const U8 kiShift = this->paramGet_KI_SHIFT(kiValid);
+    // A shift past the word's width would be undefined; F´ stores what the
+    // ground set, so the controller keeps its gains and says why
+    if (kpShift > ControllerGains::maxShift || kiShift > ControllerGains::maxShift) {
+        this->log_WARNING_LO_GainRejected(kpShift > ControllerGains::maxShift ? kpShift : kiShift,
+                                          ControllerGains::maxShift);
+        return false;
+    }
+    const bool changed = kpShift != m_kpShift || kiShift != m_kiShift;
+    m_kpShift = kpShift;
+    m_kiShift = kiShift;
+    return changed;
 }
 
 }  // namespace Kit

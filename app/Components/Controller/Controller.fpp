@@ -9,6 +9,15 @@ module Kit {
         actuator: I32
     }
 
+    @ The controller's gains, each a right shift (gain 1/2^shift): the
+    @ parameters' defaults, and the largest shift it takes (in the
+    @ dictionary: the ground's tests of the parameters read them)
+    module ControllerGains {
+        dictionary constant kpShift = 1
+        dictionary constant kiShift = 6
+        dictionary constant maxShift = 15
+    }
+
     @ Reads the controller's latest status
     port ControlStatusGet -> ControlStatus
 
@@ -28,6 +37,12 @@ module Kit {
         import Fw.Channel
         time get port timeCaller
 
+        @ The gains are F´ parameters: set and saved from the ground
+        @ (CONTROLLER_KP_SHIFT_PRM_SET, ..._PRM_SAVE, then PrmDb's
+        @ PRM_SAVE_FILE), loaded from the parameter database at start-up
+        param get port prmGetOut
+        param set port prmSetOut
+
         @ Set the value the loop tracks, in sensor counts
         sync command SET_SETPOINT(
             setpoint: I32 @< Target, within +-SETPOINT_LIMIT counts
@@ -36,6 +51,18 @@ module Kit {
         event SetpointChanged(setpoint: I32) severity activity high id 0 format "Setpoint set to {}"
 
         event SetpointRejected(setpoint: I32, limit: I32) severity warning low id 1 format "Setpoint {} is outside +-{}"
+
+        @ Proportional gain, as a right shift of the error (1/2^KP_SHIFT)
+        param KP_SHIFT: U8 default ControllerGains.kpShift id 0
+
+        @ Integral gain, as a right shift of the integral (1/2^KI_SHIFT)
+        param KI_SHIFT: U8 default ControllerGains.kiShift id 1
+
+        @ The gains in effect: at start-up, once the parameters are loaded,
+        @ and when the ground changes one
+        event GainsApplied(kpShift: U8, kiShift: U8) severity activity high id 2 format "Gains 1/2^{} (P) and 1/2^{} (I) in effect"
+
+        event GainRejected(shift: U8, limit: U8) severity warning low id 3 format "Gain shift {} is above {}: the gains are unchanged"
 
         telemetry Setpoint: I32 id 0
         telemetry Measurement: I32 id 1

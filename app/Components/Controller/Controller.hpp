@@ -27,6 +27,12 @@ class Controller final : public ControllerComponentBase {
     void schedIn_handler(FwIndexType portNum, U32 context) override;
     ControlStatus statusGet_handler(FwIndexType portNum) override;
     void SET_SETPOINT_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, I32 setpoint) override;
+    void parametersLoaded() override;
+    void parameterUpdated(FwPrmIdType id) override;
+
+    //! Takes the gains from the parameters, unless one is out of range;
+    //! whether they changed
+    bool applyGains();
 
     //! Deterministic sensor noise in [-NOISE, NOISE] (linear congruential generator)
     I32 noise();
@@ -38,6 +44,8 @@ class Controller final : public ControllerComponentBase {
     I32 m_output;
     U32 m_rng;
     U32 m_cycles;
+    U8 m_kpShift;  //!< proportional gain, 1/2^m_kpShift
+    U8 m_kiShift;  //!< integral gain, 1/2^m_kiShift
 };
 
 }  // namespace Kit

@@ -14,6 +14,10 @@ class Faults final : public FaultsComponentBase {
   public:
     static constexpr U32 OVERRUN_MAX_US = 50000;
     static constexpr U32 STACK_MAX_BYTES = 8192;
+    //! The largest file CORRUPT_FILE rewrites (a parameter file: tens of bytes)
+    static constexpr U32 FILE_MAX_BYTES = 256;
+    //! Cycles of the slowest rate group (10 Hz) from RESTART to the restart
+    static constexpr U32 RESTART_DELAY_CYCLES = 5;
 
     explicit Faults(const char* const compName);
     ~Faults();
@@ -24,11 +28,26 @@ class Faults final : public FaultsComponentBase {
     void OVERRUN_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U8 rateGroup, U32 us) override;
     void STACK_OVERFLOW_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 bytes) override;
     void ASSERT_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 code) override;
+    void CORRUPT_FILE_cmdHandler(FwOpcodeType opCode,
+                                 U32 cmdSeq,
+                                 const Fw::CmdStringArg& file,
+                                 FileDamage damage,
+                                 U32 offset) override;
+    void RESTART_cmdHandler(FwOpcodeType opCode, U32 cmdSeq) override;
+
+    //! Reads `file` whole into m_file; its size, or -1 with the failure's event
+    I32 readWhole(const Fw::CmdStringArg& file);
+    //! Writes m_file's first `size` bytes as `file`'s whole content
+    bool writeWhole(const Fw::CmdStringArg& file, U32 size);
 
     //! Armed overrun per rate group, in microseconds (0: none); set by a
     //! command, taken by the group's next cycle
     volatile U32 m_overrunUs[NUM_SCHEDIN_INPUT_PORTS];
     U32 m_lcg;
+    //! Cycles of the slowest group left before an armed restart (0: none)
+    volatile U32 m_restartIn;
+    //! The file CORRUPT_FILE rewrites (a member: no stack in the command's context)
+    U8 m_file[FILE_MAX_BYTES];
 };
 
 }  // namespace Kit

@@ -4,6 +4,9 @@
 # NoDispatcherPing.fpp beside it is the build without.
 module Kit {
 
+  @ Health's ping entries after the dispatcher's
+  constant pingEntriesToDispatcher = 3
+
   @ The dispatcher's ping: entry 2 (app/Top/services/CdhServices.fpp)
   topology DispatcherHealth {
 

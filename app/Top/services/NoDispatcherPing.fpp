@@ -4,6 +4,9 @@
 # answer. DispatcherPing.fpp beside it is the build with it.
 module Kit {
 
+  @ Health's ping entries after the dispatcher's (none)
+  constant pingEntriesToDispatcher = 2
+
   @ Entry 2 absent
   topology DispatcherHealth {
 

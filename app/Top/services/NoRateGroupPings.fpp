@@ -5,6 +5,9 @@
 # RateGroupPings.fpp beside it is the build with them.
 module Kit {
 
+  @ Health's ping entries after the rate groups' (none)
+  constant pingEntriesToRateGroups = pingEntriesToDispatcher
+
   @ The rate groups, without ping connections (entries 3-5 absent)
   topology RateGroupHealth {
 

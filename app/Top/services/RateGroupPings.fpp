@@ -5,6 +5,9 @@
 # chose.
 module Kit {
 
+  @ Health's ping entries after the rate groups'
+  constant pingEntriesToRateGroups = pingEntriesToDispatcher + 3
+
   @ The rate groups' health pings: entries 3-5 (app/Top/topology.fpp)
   topology RateGroupHealth {
 

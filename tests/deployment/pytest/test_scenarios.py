@@ -53,6 +53,8 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
               rf"marks={marks} mark_cycles=[1-9][0-9]*$")
     return [
         rf"KIT BANNER variant={variant} board=\S+ .* tick_hz=1000 .* icount_shift={ICOUNT_SHIFT} ",
+        # the RAM file system, where the build has one: a fresh boot formats it
+        RAM_FILE_SYSTEM_COLD,
         rf"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
         r"KIT RG name=rg100Hz hz=100 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
         r"KIT RG name=rg10Hz hz=10 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
@@ -74,6 +76,8 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
         r"KIT QUEUE name=comQueue depth=[1-9][0-9]* slot_bytes=[1-9][0-9]* high_water=[0-9]+ dropped=0$",
     ]
 
+
+RAM_FILE_SYSTEM_COLD = r"KIT RAMFS mount=(absent|formatted files=[1-9][0-9]* file_bytes=[1-9][0-9]* bytes=[1-9][0-9]*)$"
 
 HEALTH_AT_REST = (r"KIT HEALTH services=(absent|present entries=[1-9][0-9]* warnings=0 fatals=0)$")
 

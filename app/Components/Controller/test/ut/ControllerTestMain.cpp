@@ -22,6 +22,16 @@ TEST(Controller, TelemetryIsDecimated) {
     tester.telemetryIsDecimated();
 }
 
+TEST(Controller, GainsLoadedFromTheDatabase) {
+    Kit::ControllerTester tester;
+    tester.gainsLoadedFromTheDatabase();
+}
+
+TEST(Controller, GainOutOfRangeIsRejected) {
+    Kit::ControllerTester tester;
+    tester.gainOutOfRangeIsRejected();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

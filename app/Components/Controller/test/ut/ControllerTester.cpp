@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 
 #include "app/Components/Controller/test/ut/ControllerTester.hpp"
+#include "app/Components/Controller/FppConstantsAc.hpp"
 
 namespace Kit {
 
@@ -52,6 +53,39 @@ void ControllerTester::telemetryIsDecimated() {
     }
     ASSERT_TLM_Measurement_SIZE(3);
     ASSERT_TLM_Setpoint_SIZE(3);
+}
+
+void ControllerTester::gainsLoadedFromTheDatabase() {
+    // Nothing in the database: the defaults, said once
+    this->component.loadParameters();
+    ASSERT_EVENTS_GainsApplied_SIZE(1);
+    ASSERT_EVENTS_GainsApplied(0, ControllerGains::kpShift, ControllerGains::kiShift);
+    // A saved gain, loaded at the next start-up
+    this->paramSet_KP_SHIFT(3, Fw::ParamValid::VALID);
+    this->component.loadParameters();
+    ASSERT_EVENTS_GainsApplied(1, 3, ControllerGains::kiShift);
+    // Set from the ground: applied at once; setting it again changes nothing
+    this->paramSet_KI_SHIFT(4, Fw::ParamValid::VALID);
+    this->paramSend_KI_SHIFT(0, 2);
+    ASSERT_EVENTS_GainsApplied_SIZE(3);
+    ASSERT_EVENTS_GainsApplied(2, 3, 4);
+    this->paramSend_KI_SHIFT(0, 3);
+    ASSERT_EVENTS_GainsApplied_SIZE(3);
+}
+
+void ControllerTester::gainOutOfRangeIsRejected() {
+    this->component.loadParameters();
+    this->paramSet_KP_SHIFT(ControllerGains::maxShift + 1, Fw::ParamValid::VALID);
+    this->paramSend_KP_SHIFT(0, 1);
+    ASSERT_EVENTS_GainRejected_SIZE(1);
+    ASSERT_EVENTS_GainRejected(0, ControllerGains::maxShift + 1, ControllerGains::maxShift);
+    ASSERT_EVENTS_GainsApplied_SIZE(1);  // the defaults, at the load only
+    // The loop still runs on the defaults
+    this->sendCmd_SET_SETPOINT(0, 2, 5000);
+    for (U32 i = 0; i < 2000; i++) {
+        this->component.step();
+    }
+    EXPECT_NEAR(status().get_measurement(), 5000, 200);
 }
 
 }  // namespace Kit

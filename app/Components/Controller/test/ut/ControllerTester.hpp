@@ -20,6 +20,8 @@ class ControllerTester : public ControllerGTestBase {
     void setpointOutOfRangeIsRejected();
     void loopSettlesOnTheSetpoint();
     void telemetryIsDecimated();
+    void gainsLoadedFromTheDatabase();
+    void gainOutOfRangeIsRejected();
 
   private:
     void connectPorts();

@@ -22,6 +22,21 @@ TEST(Faults, AssertReachesTheAssertHook) {
     tester.assertReachesTheAssertHook();
 }
 
+TEST(Faults, FileDamagedInPlace) {
+    Kit::FaultsTester tester;
+    tester.fileDamagedInPlace();
+}
+
+TEST(Faults, FileDamageRefusedWhereItCannotBeDone) {
+    Kit::FaultsTester tester;
+    tester.fileDamageRefusedWhereItCannotBeDone();
+}
+
+TEST(Faults, RestartComesAfterItsDelay) {
+    Kit::FaultsTester tester;
+    tester.restartComesAfterItsDelay();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

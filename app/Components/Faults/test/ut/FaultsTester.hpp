@@ -20,8 +20,15 @@ class FaultsTester : public FaultsGTestBase {
     void injectionsAboveTheirLimitsAreRejected();
     void stackUseWithinTheLimitCompletes();
     void assertReachesTheAssertHook();
+    void fileDamagedInPlace();
+    void fileDamageRefusedWhereItCannotBeDone();
+    void restartComesAfterItsDelay();
 
   private:
+    //! Writes `size` bytes 0, 1, ... as `path`; reads a file back
+    static void writeFile(const char* path, U32 size);
+    static FwSizeType readFile(const char* path, U8* data, FwSizeType capacity);
+
     void connectPorts();
     void initComponents();
 
