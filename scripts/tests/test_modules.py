@@ -9,7 +9,7 @@ def _tree():
         {"name": "OUTPUT_DIR", "children": [
             {"name": "x", "identifier": "F-Prime/Svc/CmdDispatcher/CommandDispatcherComponentAc.cpp/f", "size": 20},
             {"name": "y", "identifier": "F-Prime/Fw/Types/SerializableAc.cpp/g", "size": 5},
-            {"name": "z", "identifier": "app/Components/Timing/TimingComponentAc.cpp/h", "size": 7}]},
+            {"name": "z", "identifier": "app/Components/Monitor/MonitorComponentAc.cpp/h", "size": 7}]},
         {"name": "WORKSPACE", "children": [
             {"name": "a", "size": 3,
              "identifier": "deps/fprime-baremetal/fprime-baremetal/Os/TaskRunner/TaskRunner.cpp/r"},
@@ -52,9 +52,37 @@ def test_the_ground_link_is_its_own_layer():
     assert by_layer.classify(":/_ZN3Kit8linkUartE") == link
     assert by_layer.classify(":/_ZN3Kit10linkHealthE") == link
     # not the link: another instance, another service
-    assert by_layer.classify(":/_ZN3Kit6timingE") == by_layer.KIT
+    assert by_layer.classify(":/_ZN3Kit10controllerE") == by_layer.KIT
     dispatcher = "deps/fprime/Svc/CmdDispatcher/CommandDispatcherImpl.cpp/f"
     assert by_layer.classify(dispatcher, "WORKSPACE") == by_layer.SERVICES
+
+
+def test_each_subtopology_and_the_instruments_are_layers_of_their_own():
+    # CdhCore's health and version: code, vtables, instances
+    health = by_layer.HEALTH_VERSION
+    assert by_layer.classify("F-Prime/Svc/Health/HealthComponentAc.cpp/f", "OUTPUT_DIR") == health
+    assert by_layer.classify(":/_ZTVN3Svc7VersionE") == health
+    assert by_layer.classify(":/_ZN3Kit6healthE") == health
+    # ... not the kit's LinkHealth, whose mangled name holds "Health"
+    assert by_layer.classify(":/_ZN3Svc10LinkHealthC2Ev") != health
+    # FileHandling: the parameter database, MicroFs and the kit's mount
+    files = by_layer.FILE_HANDLING
+    assert by_layer.classify("deps/fprime/Svc/PrmDb/PrmDbImpl.cpp/f", "WORKSPACE") == files
+    assert by_layer.classify(":/_ZN3Kit5prmDbE") == files
+    micro_fs = "deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/MicroFs/MicroFs.cpp/f"
+    assert by_layer.classify(micro_fs, "WORKSPACE") == files
+    assert by_layer.classify("deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/File.cpp/f", "WORKSPACE") == files
+    assert by_layer.classify("app/src/RamFs.cpp/s_region", "WORKSPACE") == files
+    # ... not fprime-baremetal's task
+    task = "deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/Task.cpp/f"
+    assert by_layer.classify(task, "WORKSPACE") == by_layer.OS_LAYER
+    # the kit's instruments: their code, their instances, the record
+    instruments = by_layer.INSTRUMENTS
+    assert by_layer.classify(":/_ZN3Kit6timingE") == instruments
+    assert by_layer.classify(":/_ZN3Kit10eventsPingE") == instruments
+    assert by_layer.classify("app/Components/Load/Load.cpp/f", "WORKSPACE") == instruments
+    assert by_layer.classify("app/src/Report.cpp/f", "WORKSPACE") == instruments
+    assert by_layer.classify("app/Components/Controller/Controller.cpp/f", "WORKSPACE") == by_layer.KIT
 
 
 def test_a_size_report_is_made_again_only_for_another_image(tmp_path, monkeypatch):

@@ -27,7 +27,7 @@ def test_leaves_key_by_name_and_tell_same_named_statics_apart():
         ("ZEPHYR_BASE", "kernel/sched.c/z_swap", 0)))
     assert [(leaf.key, leaf.size) for leaf in found] == [
         ("_ZN3Kit6Report5printEv", 300), ("helper@A.cpp", 20), ("helper@B.cpp", 24)]
-    assert found[0].layer == by_layer.KIT
+    assert found[0].layer == by_layer.INSTRUMENTS  # the record
 
 
 def test_a_constructor_alias_swap_is_no_change():
@@ -59,7 +59,7 @@ def test_a_floor_sums_small_symbols_per_layer():
                                    ("WORKSPACE", "app/src/S.cpp/small2", 30),
                                    ("ZEPHYR_BASE", "kernel/sched.c/z_tiny", 8)))
     table = symbols.table(found, floor=128)
-    assert table == {"big": 400, f"(symbols under 128 B: {by_layer.KIT})": 40,
+    assert table == {"big": 400, f"(symbols under 128 B: {by_layer.INSTRUMENTS})": 40,
                      f"(symbols under 128 B: {by_layer.ZEPHYR})": 8}
     assert sum(table.values()) == sum(leaf.size for leaf in found)
 

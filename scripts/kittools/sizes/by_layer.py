@@ -24,14 +24,21 @@ from kittools.workspace import KitError, environment
 
 FRAMEWORK = "F´ framework"
 SERVICES = "F´ services"
+HEALTH_VERSION = "F´ health and version (CdhCore's)"
+FILE_HANDLING = "F´ FileHandling (parameter database, RAM file system)"
 GROUND_LINK = "F´ ground link (ComFprime chain, UART driver)"
 OS_LAYER = "OS layer (fprime-baremetal / fprime-zephyr / kit)"
+INSTRUMENTS = "kit instruments (timing, probes, load, faults, record)"
 KIT = "kit deployment and components"
 ZEPHYR = "Zephyr kernel, arch, drivers"
 LIBC = "libc (picolibc, libgcc)"
 LIBSTDCXX = "libstdc++"
 UNATTRIBUTED = "unattributed"
-CATEGORIES = (FRAMEWORK, SERVICES, GROUND_LINK, OS_LAYER, KIT, ZEPHYR, LIBC, LIBSTDCXX, UNATTRIBUTED)
+#: The layers, F´'s subtopologies among them (CdhCore's health and version,
+#: FileHandling, the ComFprime chain) and the kit's instruments apart from
+#: the deployment they measure
+CATEGORIES = (FRAMEWORK, SERVICES, HEALTH_VERSION, FILE_HANDLING, GROUND_LINK, OS_LAYER, INSTRUMENTS, KIT, ZEPHYR,
+              LIBC, LIBSTDCXX, UNATTRIBUTED)
 
 # The components of the ground link (app/Top/instances.fpp): F´'s ComFprime
 # chain and fprime-zephyr's UART driver, by folder and by class name
@@ -42,12 +49,52 @@ _LINK_COMPONENTS = ("ComQueue", "FprimeFramer", "FprimeDeframer", "FrameAccumula
 # objects hold the link's static RAM (the UART's receive ring among them)
 _LINK_INSTANCES = ("comQueue", "framer", "comStub", "frameAccumulator", "deframer", "router", "linkBuffers",
                    "linkUart", "linkHealth")
-_LINK_INSTANCE_SYMBOLS = frozenset(f"_ZN3Kit{len(name)}{name}E" for name in _LINK_INSTANCES)
+
+# F´'s other subtopologies in the deployment (app/Top/services/), and the
+# kit's instruments: their components and their instances
+_HEALTH_VERSION_COMPONENTS = ("Health", "Version")
+_HEALTH_VERSION_INSTANCES = ("health", "version")
+_FILE_HANDLING_COMPONENTS = ("PrmDb",)
+_FILE_HANDLING_INSTANCES = ("prmDb",)
+_INSTRUMENT_COMPONENTS = ("Timing", "PingProbe", "LinkHealth", "Load", "Faults", "Uplink", "Downlink")
+_INSTRUMENT_INSTANCES = ("timing", "load", "faults", "uplink", "downlink", "eventsPing", "tlmSendPing", "cmdDispPing",
+                         "rg1kHzPing", "rg100HzPing", "rg10HzPing", "prmDbPing")
+
+
+def _instance_symbols(names: tuple[str, ...]) -> frozenset[str]:
+    """The mangled names of the deployment's instances (namespace Kit)."""
+    return frozenset(f"_ZN3Kit{len(name)}{name}E" for name in names)
+
+
+_LINK_INSTANCE_SYMBOLS = _instance_symbols(_LINK_INSTANCES)
+_INSTANCE_LAYERS = (
+    (_LINK_INSTANCE_SYMBOLS, GROUND_LINK),
+    (_instance_symbols(_HEALTH_VERSION_INSTANCES), HEALTH_VERSION),
+    (_instance_symbols(_FILE_HANDLING_INSTANCES), FILE_HANDLING),
+    (_instance_symbols(_INSTRUMENT_INSTANCES), INSTRUMENTS),
+)
+# F´ classes by mangled name (length-prefixed: 6Health is not 10LinkHealth)
+_SVC_CLASS_LAYERS = (
+    (_LINK_COMPONENTS, GROUND_LINK),
+    (_HEALTH_VERSION_COMPONENTS, HEALTH_VERSION),
+    (_FILE_HANDLING_COMPONENTS, FILE_HANDLING),
+)
 
 _BY_PATH = (
     # (substring of the source path, category); first match wins
     *((f"/Svc/{name}/", GROUND_LINK) for name in _LINK_COMPONENTS),
     ("/Drv/ZephyrUartDriver/", GROUND_LINK),
+    *((f"/Svc/{name}/", HEALTH_VERSION) for name in _HEALTH_VERSION_COMPONENTS),
+    *((f"/Svc/{name}/", FILE_HANDLING) for name in _FILE_HANDLING_COMPONENTS),
+    # fprime-baremetal's MicroFs, F´'s file system in every model, and the
+    # kit's mount of it
+    ("/Os/Baremetal/MicroFs/", FILE_HANDLING),
+    *((f"/Os/Baremetal/{name}.", FILE_HANDLING) for name in ("File", "FileSystem", "Directory", "DefaultFile",
+                                                             "error")),
+    ("/app/src/RamFs.", FILE_HANDLING),
+    *((f"/app/Components/{name}/", INSTRUMENTS) for name in _INSTRUMENT_COMPONENTS),
+    ("/app/src/", INSTRUMENTS),
+    ("/app/scenarios/", INSTRUMENTS),
     ("/deps/fprime-baremetal/", OS_LAYER),
     ("/deps/fprime-zephyr/", OS_LAYER),
     ("/rtos/", OS_LAYER),
@@ -70,6 +117,7 @@ _BY_PATH = (
 )
 
 _BY_SYMBOL = (
+    ("_ZN2Os9Baremetal7MicroFs", FILE_HANDLING), ("_ZZN2Os9Baremetal7MicroFs", FILE_HANDLING),
     ("_ZN3Kit", KIT), ("_ZTVN3Kit", KIT), ("_ZN3Svc", SERVICES), ("_ZTVN3Svc", SERVICES), ("_ZN2Fw", FRAMEWORK),
     ("_ZTVN2Fw", FRAMEWORK), ("_ZN2Os9Baremetal", OS_LAYER), ("_ZN2Os6Zephyr", OS_LAYER), ("_ZN2Os", FRAMEWORK),
     ("_ZTVN2Os", FRAMEWORK), ("_ZNSt", LIBSTDCXX), ("_ZSt", LIBSTDCXX), ("__cxa", LIBSTDCXX), ("__gnu_cxx", LIBSTDCXX),
@@ -119,12 +167,14 @@ def classify(identifier: str, group: str = "") -> str:
         if needle in path:
             return category
     symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
-    if symbol in _LINK_INSTANCE_SYMBOLS:
-        return GROUND_LINK
+    for instances, category in _INSTANCE_LAYERS:
+        if symbol in instances:
+            return category
     # Mangled C++ names spell each class name out (e.g. _ZTVN3Svc8ComQueueE)
-    if symbol.startswith(("_ZN3Svc", "_ZTVN3Svc", "_ZN6Zephyr", "_ZTVN6Zephyr")) and any(
-            name in symbol for name in _LINK_COMPONENTS):
-        return GROUND_LINK
+    if symbol.startswith(("_ZN3Svc", "_ZTVN3Svc", "_ZN6Zephyr", "_ZTVN6Zephyr")):
+        for names, category in _SVC_CLASS_LAYERS:
+            if any(f"{len(name)}{name}" in symbol for name in names):
+                return category
     for prefix, category in _BY_SYMBOL:
         if symbol.startswith(prefix):
             return category
