@@ -46,11 +46,12 @@ bool playSoak(const Context& context) {
         const bool flat = (minute == 1) || (stackUse == settledStackUse);
         printk(
             "KIT SOAK minute=%u slips=%u cycles_complete=%s rg1kHz_latency_max=%u stack_used=%u stack_flat=%s "
-            "heap_bytes=%u heap_after_init=%u noop=%s\n",
+            "heap_bytes=%u heap_after_init=%u health_warnings=%u noop=%s\n",
             static_cast<unsigned>(minute), static_cast<unsigned>(slips), cyclesOk ? "yes" : "no",
             static_cast<unsigned>(timing.record(0).latency.max()), static_cast<unsigned>(stackUse), flat ? "yes" : "no",
             static_cast<unsigned>(HeapMonitor::bytesRequested()),
-            static_cast<unsigned>(HeapMonitor::allocationsAfterInit()), noOp.asExpected() ? "OK" : "FAILED");
+            static_cast<unsigned>(HeapMonitor::allocationsAfterInit()), static_cast<unsigned>(Report::healthWarnings()),
+            noOp.asExpected() ? "OK" : "FAILED");
         passed = passed && (slips == 0 || !IS_ENABLED(CONFIG_KIT_DEADLINES_EXPECTED)) && cyclesOk && flat &&
                  noOp.asExpected() && HeapMonitor::allocationsAfterInit() == 0;
         Session::nextSegment();
@@ -59,9 +60,11 @@ bool playSoak(const Context& context) {
     const bool heapOk = Report::heap(context.allocator);
     Report::hash();
     const bool downlinked = Report::downlinkAndTicks();
+    // Health's pings over the whole soak: every entry answered, no warning
+    const bool healthy = Report::health();
     Report::stacks();
     Report::queues();
-    return passed && heapOk && downlinked;
+    return passed && heapOk && downlinked && healthy;
 }
 
 }  // namespace Scenario

@@ -251,6 +251,14 @@ void healthBreak(const char* axis, U32 level, bool reached, U32 worst) {
 #endif
 }
 
+U32 healthWarnings() {
+#if defined(CONFIG_KIT_SERVICE_CDH)
+    return downlink.eventCount(Kit::health.getIdBase() + HealthIds::PING_WARN);
+#else
+    return 0;
+#endif
+}
+
 bool health() {
 #if !defined(CONFIG_KIT_SERVICE_CDH)
     // The board's profile leaves the services out for this model (its Kconfig.defconfig says why)
@@ -270,7 +278,7 @@ bool health() {
                probe.outstanding() ? "yes" : "no");
     }
     const FwEventIdType base = Kit::health.getIdBase();
-    const U32 warnings = downlink.eventCount(base + HealthIds::PING_WARN);
+    const U32 warnings = healthWarnings();
     const U32 fatals =
         downlink.eventCount(base + HealthIds::PING_LATE) + downlink.eventCount(base + HealthIds::PING_WRONG_KEY);
     printk("KIT HEALTH services=present entries=%u warnings=%u fatals=%u\n", static_cast<unsigned>(PING_ENTRY_COUNT),

@@ -65,6 +65,10 @@ void sweepPoint(const SweepPoint& point, bool broke[]);
 //! health's events reported) and a VERSION line (the version events that
 //! reached the downlink); true when every entry was answered, none late
 bool health();
+
+//! Health's warnings (HLTH_PING_WARN) downlinked so far; 0 where the build
+//! has no health
+U32 healthWarnings();
 //! Health's side of a load sweep (where the build has health): a segment
 //! starts on every ping probe; sweepHealth() prints the segment's longest
 //! wait for a ping's answer (SWEEPHEALTH) and returns its cycles;
