@@ -4,7 +4,7 @@
 // \brief  Fault injection by command
 // ======================================================================
 #include "app/Components/Faults/Faults.hpp"
-#include <Os/File.hpp>
+#include <Os/FileSystem.hpp>
 #include "app/Components/Faults/Restart.hpp"
 #include "app/Components/Timing/Busy.hpp"
 
@@ -30,8 +30,7 @@ __attribute__((noinline)) U32 useStack(U32 levels) {
 }
 }  // namespace
 
-Faults::Faults(const char* const compName)
-    : FaultsComponentBase(compName), m_overrunUs(), m_lcg(1), m_restartIn(0), m_file() {}
+Faults::Faults(const char* const compName) : FaultsComponentBase(compName), m_overrunUs(), m_lcg(1), m_restartIn(0) {}
 
 Faults::~Faults() {}
 
@@ -85,41 +84,55 @@ void Faults::ASSERT_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 code) {
     this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::EXECUTION_ERROR);
 }
 
-I32 Faults::readWhole(const Fw::CmdStringArg& file) {
+Os::File::Status Faults::flip(const Fw::CmdStringArg& file, U32 offset) {
+    U8 byte = 0;
+    FwSizeType count = 1;
     Os::File reader;
     Os::File::Status status = reader.open(file.toChar(), Os::File::OPEN_READ);
-    FwSizeType size = 0;
     if (status == Os::File::OP_OK) {
-        status = reader.size(size);
-    }
-    if (status == Os::File::OP_OK && size > FILE_MAX_BYTES) {
-        this->log_WARNING_LO_InjectionRejected(static_cast<U32>(size), FILE_MAX_BYTES);
-        return -1;
+        status = reader.seek(static_cast<FwSignedSizeType>(offset), Os::File::ABSOLUTE);
     }
     if (status == Os::File::OP_OK) {
-        status = reader.read(m_file, size, Os::File::WAIT);
+        status = reader.read(&byte, count, Os::File::WAIT);
     }
+    reader.close();
     if (status != Os::File::OP_OK) {
-        this->log_WARNING_LO_FileNotCorrupted(file, static_cast<I32>(status));
-        return -1;
+        return status;
     }
-    return static_cast<I32>(size);
+    // F´'s OPEN_WRITE keeps the file's content (on POSIX and MicroFs alike):
+    // the one byte is written over in place
+    byte = static_cast<U8>(~byte);
+    Os::File writer;
+    status = writer.open(file.toChar(), Os::File::OPEN_WRITE);
+    if (status == Os::File::OP_OK) {
+        status = writer.seek(static_cast<FwSignedSizeType>(offset), Os::File::ABSOLUTE);
+    }
+    if (status == Os::File::OP_OK) {
+        status = writer.write(&byte, count, Os::File::WAIT);
+    }
+    return status;
 }
 
-bool Faults::writeWhole(const Fw::CmdStringArg& file, U32 size) {
-    // Created anew, so the file ends where this content does (a file
-    // system may keep a longer old content past a plain write's end)
-    Os::File writer;
-    Os::File::Status status = writer.open(file.toChar(), Os::File::OPEN_CREATE, Os::File::OVERWRITE);
-    FwSizeType written = size;
+Os::File::Status Faults::truncate(const Fw::CmdStringArg& file, U32 size) {
+    FW_ASSERT(size <= TRUNCATE_MAX_BYTES, static_cast<FwAssertArgType>(size));
+    U8 kept[TRUNCATE_MAX_BYTES];
+    FwSizeType count = size;
+    Os::File reader;
+    Os::File::Status status = reader.open(file.toChar(), Os::File::OPEN_READ);
     if (status == Os::File::OP_OK && size > 0) {
-        status = writer.write(m_file, written, Os::File::WAIT);
+        status = reader.read(kept, count, Os::File::WAIT);
     }
-    if (status != Os::File::OP_OK || written != size) {
-        this->log_WARNING_LO_FileNotCorrupted(file, static_cast<I32>(status));
-        return false;
+    reader.close();
+    if (status != Os::File::OP_OK) {
+        return status;
     }
-    return true;
+    // Created anew, so the file ends where the kept bytes do
+    Os::File writer;
+    status = writer.open(file.toChar(), Os::File::OPEN_CREATE, Os::File::OVERWRITE);
+    if (status == Os::File::OP_OK && size > 0) {
+        status = writer.write(kept, count, Os::File::WAIT);
+    }
+    return status;
 }
 
 void Faults::CORRUPT_FILE_cmdHandler(FwOpcodeType opCode,
@@ -127,23 +140,27 @@ void Faults::CORRUPT_FILE_cmdHandler(FwOpcodeType opCode,
                                      const Fw::CmdStringArg& file,
                                      FileDamage damage,
                                      U32 offset) {
-    const I32 size = this->readWhole(file);
-    if (size < 0) {
+    FwSizeType size = 0;
+    const Os::FileSystem::Status found = Os::FileSystem::getFileSize(file.toChar(), size);
+    if (found != Os::FileSystem::OP_OK) {
+        this->log_WARNING_LO_FileNotCorrupted(file, static_cast<I32>(found));
         this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::EXECUTION_ERROR);
         return;
     }
-    // TRUNCATE keeps at most the whole file; FLIP needs a byte at offset
+    // TRUNCATE keeps at most the whole file (and what the stack holds);
+    // FLIP needs a byte at offset
     const U32 bytes = static_cast<U32>(size);
-    const bool truncate = damage == FileDamage::TRUNCATE;
-    if ((truncate && offset > bytes) || (!truncate && offset >= bytes)) {
-        this->log_WARNING_LO_InjectionRejected(offset, truncate ? bytes : bytes - 1);
+    const bool truncating = damage == FileDamage::TRUNCATE;
+    const U32 limit =
+        truncating ? (bytes < TRUNCATE_MAX_BYTES ? bytes : TRUNCATE_MAX_BYTES) : (bytes > 0 ? bytes - 1 : 0);
+    if ((!truncating && bytes == 0) || offset > limit) {
+        this->log_WARNING_LO_InjectionRejected(offset, limit);
         this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
         return;
     }
-    if (!truncate) {
-        m_file[offset] = static_cast<U8>(~m_file[offset]);
-    }
-    if (!this->writeWhole(file, truncate ? offset : bytes)) {
+    const Os::File::Status status = truncating ? this->truncate(file, offset) : this->flip(file, offset);
+    if (status != Os::File::OP_OK) {
+        this->log_WARNING_LO_FileNotCorrupted(file, static_cast<I32>(status));
         this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::EXECUTION_ERROR);
         return;
     }

@@ -40,7 +40,7 @@ module Kit {
         ) opcode 2
 
         @ Damage a file in place, as a bad write or a radiation hit would
-        @ (a file of at most FILE_MAX_BYTES: it is rewritten whole)
+        @ (TRUNCATE keeps at most TRUNCATE_MAX_BYTES)
         sync command CORRUPT_FILE(
             file: string size FileNameStringSize @< The file's path
             damage: FileDamage @< What to do to it

@@ -6,6 +6,7 @@
 #ifndef KIT_FAULTS_HPP
 #define KIT_FAULTS_HPP
 
+#include <Os/File.hpp>
 #include "app/Components/Faults/FaultsComponentAc.hpp"
 
 namespace Kit {
@@ -14,8 +15,8 @@ class Faults final : public FaultsComponentBase {
   public:
     static constexpr U32 OVERRUN_MAX_US = 50000;
     static constexpr U32 STACK_MAX_BYTES = 8192;
-    //! The largest file CORRUPT_FILE rewrites (a parameter file: tens of bytes)
-    static constexpr U32 FILE_MAX_BYTES = 256;
+    //! The most a TRUNCATE keeps (its bytes are copied through the stack)
+    static constexpr U32 TRUNCATE_MAX_BYTES = 32;
     //! Cycles of the slowest rate group (10 Hz) from RESTART to the restart
     static constexpr U32 RESTART_DELAY_CYCLES = 5;
 
@@ -35,10 +36,10 @@ class Faults final : public FaultsComponentBase {
                                  U32 offset) override;
     void RESTART_cmdHandler(FwOpcodeType opCode, U32 cmdSeq) override;
 
-    //! Reads `file` whole into m_file; its size, or -1 with the failure's event
-    I32 readWhole(const Fw::CmdStringArg& file);
-    //! Writes m_file's first `size` bytes as `file`'s whole content
-    bool writeWhole(const Fw::CmdStringArg& file, U32 size);
+    //! Inverts the byte at `offset` of `file`, in place
+    Os::File::Status flip(const Fw::CmdStringArg& file, U32 offset);
+    //! Cuts `file` to its first `size` bytes (at most TRUNCATE_MAX_BYTES)
+    Os::File::Status truncate(const Fw::CmdStringArg& file, U32 size);
 
     //! Armed overrun per rate group, in microseconds (0: none); set by a
     //! command, taken by the group's next cycle
@@ -46,8 +47,6 @@ class Faults final : public FaultsComponentBase {
     U32 m_lcg;
     //! Cycles of the slowest group left before an armed restart (0: none)
     volatile U32 m_restartIn;
-    //! The file CORRUPT_FILE rewrites (a member: no stack in the command's context)
-    U8 m_file[FILE_MAX_BYTES];
 };
 
 }  // namespace Kit

@@ -25,8 +25,10 @@ module Kit {
     # Health pings every active component that has ping ports, through the
     # kit's probe, which times each round trip. Entry i is port i of health
     # and entry i of the table in KitTopology.cpp: the services here (0, 1),
-    # the active dispatcher (2, dispatcher/) and the active rate groups where
-    # the model pings them (3-5, rategroups/). F´'s ComQueue has no ping
+    # the active dispatcher (2, DispatcherPing.fpp), the active rate groups
+    # where the model pings them (3-5, RateGroupPings.fpp) and the parameter
+    # database after them (ParamPing.fpp): each file's constant says where
+    # the next begins. F´'s ComQueue has no ping
     # ports; the kit's Load is the background load it measures, a worker F´
     # leaves out of health checking.
     connections Health {

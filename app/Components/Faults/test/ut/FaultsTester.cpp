@@ -70,7 +70,7 @@ void FaultsTester::assertReachesTheAssertHook() {
 }
 
 void FaultsTester::writeFile(const char* path, U32 size) {
-    U8 data[Faults::FILE_MAX_BYTES + 1];
+    U8 data[2 * Faults::TRUNCATE_MAX_BYTES];
     ASSERT_LE(size, sizeof(data));
     for (U32 i = 0; i < size; i++) {
         data[i] = static_cast<U8>(i);
@@ -116,11 +116,11 @@ void FaultsTester::fileDamageRefusedWhereItCannotBeDone() {
     this->sendCmd_CORRUPT_FILE(0, 2, Fw::CmdStringArg(FILE_PATH), FileDamage::TRUNCATE, FILE_SIZE + 1);
     ASSERT_CMD_RESPONSE(1, FaultsComponentBase::OPCODE_CORRUPT_FILE, 2, Fw::CmdResponse::VALIDATION_ERROR);
     ASSERT_EVENTS_InjectionRejected_SIZE(2);
-    // A file too large to rewrite whole, and one that is not there
-    writeFile(FILE_PATH, Faults::FILE_MAX_BYTES + 1);
-    this->sendCmd_CORRUPT_FILE(0, 3, Fw::CmdStringArg(FILE_PATH), FileDamage::FLIP, 0);
-    ASSERT_CMD_RESPONSE(2, FaultsComponentBase::OPCODE_CORRUPT_FILE, 3, Fw::CmdResponse::EXECUTION_ERROR);
-    ASSERT_EVENTS_InjectionRejected(2, Faults::FILE_MAX_BYTES + 1, Faults::FILE_MAX_BYTES);
+    // More kept than a truncation copies, and a file that is not there
+    writeFile(FILE_PATH, 2 * Faults::TRUNCATE_MAX_BYTES);
+    this->sendCmd_CORRUPT_FILE(0, 3, Fw::CmdStringArg(FILE_PATH), FileDamage::TRUNCATE, Faults::TRUNCATE_MAX_BYTES + 1);
+    ASSERT_CMD_RESPONSE(2, FaultsComponentBase::OPCODE_CORRUPT_FILE, 3, Fw::CmdResponse::VALIDATION_ERROR);
+    ASSERT_EVENTS_InjectionRejected(2, Faults::TRUNCATE_MAX_BYTES + 1, Faults::TRUNCATE_MAX_BYTES);
     this->sendCmd_CORRUPT_FILE(0, 4, Fw::CmdStringArg("NoSuchFile.bin"), FileDamage::FLIP, 0);
     ASSERT_CMD_RESPONSE(3, FaultsComponentBase::OPCODE_CORRUPT_FILE, 4, Fw::CmdResponse::EXECUTION_ERROR);
     ASSERT_EVENTS_FileNotCorrupted_SIZE(1);
