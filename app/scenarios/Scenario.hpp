@@ -41,6 +41,11 @@ bool playGround(const Context& context);         //!< ground.cpp
 //! console names at boot
 Play choose();
 
+//! Before a warm restart the running deployment asks for (Faults.RESTART,
+//! app/src/Restart.cpp): the boot after it plays the same scenario again
+//! without asking the console, as a restart into a chosen scenario does
+void resumeAfterRestart();
+
 //! The uplink script's frames, `count` of them, in static storage all
 //! scenarios share (one plays per boot): a local array of frames would cost
 //! the main stack, which on baremetal is every task's

@@ -147,6 +147,14 @@ Play choose() {
     }
 }
 
+void resumeAfterRestart() {
+    // The name this boot took is still there (takeChosen cleared the magic
+    // only); a build that does not ask plays its own scenario anyway
+    if (IS_ENABLED(CONFIG_KIT_SCENARIO_AT_BOOT) && byName(s_chosen.name) != nullptr) {
+        s_chosen.magic = CHOSEN_MAGIC;
+    }
+}
+
 Uplink::Frame* scriptFrames(FwSizeType count) {
     FW_ASSERT(count <= SCRIPT_CAPACITY, static_cast<FwAssertArgType>(count));
     return s_script;
