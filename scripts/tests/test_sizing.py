@@ -71,6 +71,10 @@ def test_the_largest_packet_is_measured_as_f_prime_serializes_it():
     }
     # command 2+4+(2+40)+1 = 49; event 2+4+11+(2+64)+4 = 87; channel 2+4+11+16 = 33
     assert sizing.largest_packet(dictionary) == (87, "event Kit.e.ASSERT")
+    # F´ truncates an event's strings to FW_LOG_STRING_MAX_SIZE, a command's
+    # to FW_CMD_STRING_MAX_SIZE: event 2+4+11+(2+12)+4 = 35, command 2+4+(2+30)+1 = 39
+    config = {"CONFIG_FPRIME_LOG_STRING_MAX_SIZE": "12", "CONFIG_FPRIME_CMD_STRING_MAX_SIZE": "30"}
+    assert sizing.largest_packet(dictionary, config) == (39, "command Kit.c.SAY")
 
 
 def test_sizing_refuses_a_log_without_queues(tmp_path, capsys):

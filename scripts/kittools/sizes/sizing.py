@@ -73,10 +73,14 @@ class _Types:
     """Serialized sizes of the dictionary's types, as F´ serializes them:
     integers and floats by width, bool one byte, enums by their
     representation, arrays and structs by their members, strings as a
-    length (FwSizeStoreType) and at most their declared size."""
+    length (FwSizeStoreType) and at most their declared size, and at most
+    `string_cap` where F´ truncates them (an event's string arguments to
+    FW_LOG_STRING_MAX_SIZE, a command's to FW_CMD_STRING_MAX_SIZE, a
+    channel's to FW_TLM_STRING_MAX_SIZE: the generated code's FW_MIN)."""
 
-    def __init__(self, dictionary: dict[str, Any]) -> None:
+    def __init__(self, dictionary: dict[str, Any], string_cap: int | None = None) -> None:
         self.defined = {t["qualifiedName"]: t for t in dictionary.get("typeDefinitions", [])}
+        self.string_cap = string_cap
 
     def size(self, kind: dict[str, Any], depth: int = 0) -> int:
         if depth > 16:
@@ -87,7 +91,9 @@ class _Types:
             case "bool":
                 return 1
             case "string":
-                return self.named("FwSizeStoreType") + int(kind["size"])
+                declared = int(kind["size"])
+                kept = declared if self.string_cap is None else min(declared, self.string_cap)
+                return self.named("FwSizeStoreType") + kept
             case "qualifiedIdentifier":
                 return self.defined_size(self.defined[kind["name"]], depth + 1)
         raise KitError(f"dictionary type of unknown kind: {kind}")
@@ -109,21 +115,29 @@ class _Types:
         return self.defined_size(self.defined[name], 0)
 
 
-def largest_packet(dictionary: dict[str, Any]) -> tuple[int, str]:
+def largest_packet(dictionary: dict[str, Any], config: dict[str, str] | None = None) -> tuple[int, str]:
     """The largest command, event or telemetry packet the dictionary allows
     (F´'s packet layouts: a descriptor, the id, the time tag where there is
     one, the arguments or value) and which one it is: the least
-    FW_COM_BUFFER_MAX_SIZE that holds every packet of this deployment."""
+    FW_COM_BUFFER_MAX_SIZE that holds every packet of this deployment. With
+    the build's `config`, string arguments count as F´ truncates them."""
+    def cap(symbol: str) -> int | None:
+        value = (config or {}).get(symbol)
+        return int(value) if value else None
+
     types = _Types(dictionary)
+    commands = _Types(dictionary, cap("CONFIG_FPRIME_CMD_STRING_MAX_SIZE"))
+    events = _Types(dictionary, cap("CONFIG_FPRIME_LOG_STRING_MAX_SIZE"))
+    channels = _Types(dictionary, cap("CONFIG_FPRIME_TLM_STRING_MAX_SIZE"))
     descriptor = types.named("FwPacketDescriptorType")
     time_tag = types.named("FwTimeBaseStoreType") + types.named("FwTimeContextStoreType") + 4 + 4  # s, us: U32
-    candidates = [(descriptor + types.named("FwOpcodeType") + sum(types.size(p["type"]) for p in c["formalParams"]),
+    candidates = [(descriptor + types.named("FwOpcodeType") + sum(commands.size(p["type"]) for p in c["formalParams"]),
                    f"command {c['name']}") for c in dictionary.get("commands", [])]
     candidates += [(descriptor + types.named("FwEventIdType") + time_tag
-                    + sum(types.size(p["type"]) for p in e["formalParams"]), f"event {e['name']}")
+                    + sum(events.size(p["type"]) for p in e["formalParams"]), f"event {e['name']}")
                    for e in dictionary.get("events", [])]
-    candidates += [(descriptor + types.named("FwChanIdType") + time_tag + types.size(c["type"]), f"channel {c['name']}")
-                   for c in dictionary.get("telemetryChannels", [])]
+    candidates += [(descriptor + types.named("FwChanIdType") + time_tag + channels.size(c["type"]),
+                    f"channel {c['name']}") for c in dictionary.get("telemetryChannels", [])]
     return max(candidates) if candidates else (0, "nothing")
 
 
@@ -132,7 +146,7 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
     channels = dictionary.get("telemetryChannels", [])
     with_channels = len({c["name"].split(".")[-2] for c in channels})
     found: list[Advice] = []
-    packet, largest = largest_packet(dictionary)
+    packet, largest = largest_packet(dictionary, config)
     if config.get("CONFIG_FPRIME_COM_BUFFER_MAX_SIZE"):
         # Every queued command, event and packet carries a buffer of this
         # size, in many copies: what a byte of it costs is measured, not
