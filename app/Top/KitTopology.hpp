@@ -56,8 +56,9 @@ struct QueueUse {
 QueueUse queueUse(const ActiveInstance& instance);
 
 //! Svc.Health's ping entries: events, tlmSend, the dispatcher where it is
-//! active, and the rate groups where the model pings them
-//! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS). Entry i is health's port i.
+//! active, the rate groups where the model pings them
+//! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS) and the parameter database where
+//! the build has it (CONFIG_KIT_SERVICE_PARAMS). Entry i is health's port i.
 #if defined(CONFIG_KIT_SERVICE_CDH)
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
 constexpr FwSizeType PINGED_RATE_GROUPS = 3;
