@@ -7,6 +7,7 @@ import contextlib
 import fcntl
 import os
 import shutil
+import subprocess
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -62,6 +63,23 @@ def check_provisioned() -> None:
     if missing or not (KIT_ROOT / ".west" / "config").is_file():
         what = ", ".join(missing) if missing else ".west/config"
         raise KitError(f"the workspace is not provisioned (missing: {what}). Run scripts/setup.sh first.")
+
+
+def uncommitted_changes(root: Path | None = None) -> list[str]:
+    """The kit's tracked files with uncommitted changes (git status), empty
+    for a committed tree or where git cannot tell."""
+    root = KIT_ROOT if root is None else root
+    done = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--untracked-files=no"],
+                          capture_output=True, text=True, check=False)
+    return [line[3:] for line in done.stdout.splitlines()] if done.returncode == 0 else []
+
+
+def check_committed(why: str, root: Path | None = None) -> None:
+    """KitError if the kit's tree has uncommitted changes, saying `why` that matters."""
+    changed = uncommitted_changes(root)
+    if changed:
+        shown = ", ".join(changed[:5]) + (f" and {len(changed) - 5} more" if len(changed) > 5 else "")
+        raise KitError(f"uncommitted changes ({shown}): {why}. Commit them first.")
 
 
 def environment() -> dict[str, str]:

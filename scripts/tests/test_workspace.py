@@ -1,4 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
+import subprocess
+from pathlib import Path
+
 import pytest
 
 from kittools import workspace
@@ -80,3 +83,18 @@ def test_a_second_run_in_the_same_tree_is_refused(tmp_path, monkeypatch):
         holder.wait()
     with workspace.one_at_a_time("test"):  # free again once the holder is gone
         pass
+
+
+def test_check_committed_names_the_changed_files(tmp_path: Path) -> None:
+    def git(*args: str) -> None:
+        subprocess.run(["git", "-C", str(tmp_path), *args], check=True, capture_output=True)
+
+    git("init", "-q")
+    (tmp_path / "kept.txt").write_text("one\n")
+    git("add", "kept.txt")
+    git("-c", "user.name=t", "-c", "user.email=t@t", "commit", "-q", "-m", "one")
+    (tmp_path / "untracked.txt").write_text("not the kit's\n")
+    workspace.check_committed("why", tmp_path)  # untracked files are not the image's
+    (tmp_path / "kept.txt").write_text("two\n")
+    with pytest.raises(KitError, match=r"uncommitted changes \(kept.txt\): why"):
+        workspace.check_committed("why", tmp_path)
