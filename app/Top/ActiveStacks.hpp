@@ -20,14 +20,17 @@ namespace Kit {
 //! The stack of every active instance, as the table gives it
 constexpr FwSizeType ACTIVE_STACKS[] = {
 #if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    Stacks::rg1kHz,  Stacks::rg100Hz, Stacks::rg10Hz,  // passive rate groups run on the caller's stack
+    Stacks::rg1kHz,       Stacks::rg100Hz, Stacks::rg10Hz,  // passive rate groups run on the caller's stack
 #endif
 #if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
     Stacks::cmdDisp,  // the passive dispatcher runs on its sender's stack
 #endif
-    Stacks::events,  Stacks::tlmSend, Stacks::load,   Stacks::comQueue,
+    Stacks::events,       Stacks::tlmSend, Stacks::load,   Stacks::comQueue,
 #if defined(CONFIG_KIT_SERVICE_PARAMS)
     Stacks::prmDb,  // the parameter database (app/Top/services/)
+#endif
+#if defined(CONFIG_KIT_SERVICE_FILES)
+    Stacks::fileDownlink,  // the file downlink (app/Top/services/)
 #endif
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);

@@ -37,6 +37,9 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
 #if defined(CONFIG_KIT_SERVICE_PARAMS)
     {"prmDb", &prmDb, sizeof(prmDb), &prmDb},
 #endif
+#if defined(CONFIG_KIT_SERVICE_FILES)
+    {"fileDownlink", &fileDownlink, sizeof(fileDownlink), &fileDownlink},
+#endif
 };
 
 #if defined(CONFIG_KIT_SERVICE_CDH)
@@ -48,15 +51,21 @@ struct PingEntry {
     PingProbe* probe;
 };
 const PingEntry PING_ENTRIES[PING_ENTRY_COUNT] = {
-    {"events", &eventsPing},   {"tlmSend", &tlmSendPing},
+    {"events", &eventsPing},
+    {"tlmSend", &tlmSendPing},
 #if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
     {"cmdDisp", &cmdDispPing},
 #endif
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
-    {"rg1kHz", &rg1kHzPing},   {"rg100Hz", &rg100HzPing}, {"rg10Hz", &rg10HzPing},
+    {"rg1kHz", &rg1kHzPing},
+    {"rg100Hz", &rg100HzPing},
+    {"rg10Hz", &rg10HzPing},
 #endif
 #if defined(CONFIG_KIT_SERVICE_PARAMS)
     {"prmDb", &prmDbPing},
+#endif
+#if defined(CONFIG_KIT_SERVICE_FILES)
+    {"fileDownlink", &fileDownlinkPing},
 #endif
 };
 }  // namespace
@@ -162,9 +171,10 @@ void configureLink(Fw::MemAllocator& allocator) {
     linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight, linkUartCounts);
     frameAccumulator.configure(linkHealth.detector(), 1, allocator, Link::accumulatorSize);
 
-    // Events first, then telemetry. The buffer port (file downlink) is
-    // unused but needs a slot: ComQueue's depth telemetry asserts on a queue
-    // of depth 0.
+    // Events first, then telemetry, then the file downlink's packets (one at
+    // a time: it sends the next when the last comes back). A build without
+    // the file downlink keeps the slot: ComQueue's depth telemetry asserts
+    // on a queue of depth 0.
     Svc::ComQueue::QueueConfigurationTable queues;
     queues.entries[0] = {Link::eventDepth, 0};
     queues.entries[1] = {Link::telemetryDepth, 1};

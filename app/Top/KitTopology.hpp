@@ -39,7 +39,13 @@ constexpr FwSizeType PARAMETER_DATABASES = 1;
 #else
 constexpr FwSizeType PARAMETER_DATABASES = 0;
 #endif
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + PARAMETER_DATABASES;
+#if defined(CONFIG_KIT_SERVICE_FILES)
+constexpr FwSizeType FILE_DOWNLINKS = 1;
+#else
+constexpr FwSizeType FILE_DOWNLINKS = 0;
+#endif
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT =
+    4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + PARAMETER_DATABASES + FILE_DOWNLINKS;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr
@@ -58,14 +64,17 @@ QueueUse queueUse(const ActiveInstance& instance);
 //! Svc.Health's ping entries: events, tlmSend, the dispatcher where it is
 //! active, the rate groups where the model pings them
 //! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS) and the parameter database where
-//! the build has it (CONFIG_KIT_SERVICE_PARAMS). Entry i is health's port i.
+//! the build has it (CONFIG_KIT_SERVICE_PARAMS), then the file downlink
+//! where the build has it (CONFIG_KIT_SERVICE_FILES). Entry i is health's
+//! port i.
 #if defined(CONFIG_KIT_SERVICE_CDH)
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
 constexpr FwSizeType PINGED_RATE_GROUPS = 3;
 #else
 constexpr FwSizeType PINGED_RATE_GROUPS = 0;
 #endif
-constexpr FwIndexType PING_ENTRY_COUNT = 2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + PARAMETER_DATABASES;
+constexpr FwIndexType PING_ENTRY_COUNT =
+    2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + PARAMETER_DATABASES + FILE_DOWNLINKS;
 //! Name of ping entry `entry`
 const char* pingEntryName(FwIndexType entry);
 //! The probe timing ping entry `entry`'s round trips

@@ -43,6 +43,9 @@ enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 namespace Kit_prmDbPing {
 enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 }
+namespace Kit_fileDownlinkPing {
+enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
+}
 }  // namespace PingEntries
 
 namespace Kit {

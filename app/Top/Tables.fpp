@@ -36,6 +36,7 @@ module Kit {
     constant tlmSend = 4
     constant events = 3
     constant prmDb = 2
+    constant fileDownlink = 2
     constant load = 1
   }
 
@@ -56,6 +57,7 @@ module Kit {
     constant comQueue = 2048
     constant load = 2048
     constant prmDb = 2048
+    constant fileDownlink = 2048
   }
 
 }

@@ -41,17 +41,36 @@ module Kit {
     @ The parameter database: a component's save (its parameter's
     @ _PRM_SAVE command), the database's own commands and health's ping
     constant prmDb = 4
+    @ The file downlink: its 10 Hz Run, each packet's buffer coming back,
+    @ a command and health's ping
+    constant fileDownlink = 5
   }
 
   @ The RAM file system (fprime-baremetal's MicroFs, app/src/RamFs.cpp)
-  @ names a file by its bin and slot: one bin of CONFIG_KIT_RAMFS_FILES
-  @ files of CONFIG_KIT_RAMFS_FILE_SIZE bytes
+  @ names a file by its bin and slot: bin 0 holds CONFIG_KIT_RAMFS_FILES
+  @ files of CONFIG_KIT_RAMFS_FILE_SIZE bytes, bin 1 (where the build has
+  @ it) the bulk file of CONFIG_KIT_RAMFS_BULK_FILE_SIZE bytes
   module RamFs {
     @ The parameter database's file (in the dictionary: the ground names
     @ it in PRM_LOAD_FILE)
     dictionary constant parameterFile = "/bin0/file0"
     @ A file a ground test may write and load (PRM_LOAD_FILE)
     dictionary constant scratchFile = "/bin0/file1"
+    @ The file the file downlink's test fills (Load.FILL_FILE) and sends
+    dictionary constant bulkFile = "/bin1/file0"
+  }
+
+  @ The file downlink's clock: it runs in the 10 Hz group
+  module FileDownlinkTimings {
+    @ Run's period
+    constant cycleMs = 100
+    @ A packet's buffer not back in this long: the downlink is given up
+    constant timeoutMs = 1000
+    @ Pause after a file before the next one starts
+    constant cooldownMs = 100
+    @ Files SendFile may queue behind the one being sent (each entry holds
+    @ two file names: 160 B of the heap)
+    constant fileQueueDepth = 1
   }
 
   @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:
@@ -157,6 +176,7 @@ module Kit {
   instance rg10HzPing: Kit.PingProbe base id 0x2B40
   instance cmdDispPing: Kit.PingProbe base id 0x2B50
   instance prmDbPing: Kit.PingProbe base id 0x2B60
+  instance fileDownlinkPing: Kit.PingProbe base id 0x2B70
 
   @ Where there is no parameter database: every parameter keeps its default
   instance paramDefaults: Kit.ParamDefaults base id 0x2D00
@@ -174,6 +194,20 @@ module Kit {
     """
     phase Fpp.ToCpp.Phases.readParameters """
     Kit::prmDb.readParamFile();
+    """
+  }
+
+  @ F´'s file downlink (FileHandling's fileDownlink): a file of the RAM
+  @ file system to the ground, one packet at a time, the next when the
+  @ link returns the last one's buffer; given up after 1 s without it
+  instance fileDownlink: Svc.FileDownlink base id 0x2E00 \
+    queue size Queues.fileDownlink \
+    stack size Stacks.fileDownlink \
+    priority Priorities.fileDownlink \
+  {
+    phase Fpp.ToCpp.Phases.configComponents """
+    Kit::fileDownlink.configure(FileDownlinkTimings::timeoutMs, FileDownlinkTimings::cooldownMs,
+                                FileDownlinkTimings::cycleMs, FileDownlinkTimings::fileQueueDepth);
     """
   }
 

@@ -48,6 +48,10 @@ module Kit {
     import ParamServices
     import ParamHealth
 
+    # F´'s file downlink from the RAM file system, with its ping
+    # (app/Top/services/)
+    import FileServices
+
     command connections instance cmdDisp
     event connections instance events
     telemetry connections instance tlmSend
@@ -83,7 +87,8 @@ module Kit {
       rg10Hz.RateGroupMemberOut[7] -> comQueue.run
       rg10Hz.RateGroupMemberOut[8] -> linkHealth.schedIn
       # [9]: health's 10 Hz run, where the build has it (app/Top/services/)
-      rg10Hz.RateGroupMemberOut[10] -> timing.cycleEnd[2]
+      # [10]: the file downlink's 10 Hz run, where the build has it (app/Top/services/)
+      rg10Hz.RateGroupMemberOut[11] -> timing.cycleEnd[2]
     }
 
     # The background load's burst goes through its own queue

@@ -11,7 +11,7 @@
 
 enum {
     //! The kit's own, and the controller's parameters' set and save
-    KIT_DEPLOYMENT_COMMANDS = 22,
+    KIT_DEPLOYMENT_COMMANDS = 23,
 #if defined(CONFIG_KIT_SERVICE_CDH)
     KIT_CDH_COMMANDS = 5,  //!< Svc.Health's 3 and Svc.Version's 2
 #else
@@ -22,7 +22,13 @@ enum {
 #else
     KIT_PARAM_COMMANDS = 0,
 #endif
-    CMD_DISPATCHER_DISPATCH_TABLE_SIZE = KIT_DEPLOYMENT_COMMANDS + KIT_CDH_COMMANDS + KIT_PARAM_COMMANDS,
+#if defined(CONFIG_KIT_SERVICE_FILES)
+    KIT_FILE_COMMANDS = 3,  //!< Svc.FileDownlink's
+#else
+    KIT_FILE_COMMANDS = 0,
+#endif
+    CMD_DISPATCHER_DISPATCH_TABLE_SIZE =
+        KIT_DEPLOYMENT_COMMANDS + KIT_CDH_COMMANDS + KIT_PARAM_COMMANDS + KIT_FILE_COMMANDS,
     CMD_DISPATCHER_SEQUENCER_TABLE_SIZE = 4,
 };
 

@@ -19,19 +19,25 @@ enum {
 #else
     CDH_CHANNELS = 0,
 #endif
+#if defined(CONFIG_KIT_SERVICE_FILES)
+    FILE_CHANNELS = 3,  //!< Svc.FileDownlink's (app/Top/services/)
+#else
+    FILE_CHANNELS = 0,
+#endif
+    SERVICE_CHANNELS = CDH_CHANNELS + FILE_CHANNELS,
 };
 enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE) && defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
     TLMCHAN_HASH_BUCKETS =
-        42 + CDH_CHANNELS  //!< three more for the passive rate groups, three fewer for the passive dispatcher
+        42 + SERVICE_CHANNELS  //!< three more for the passive rate groups, three fewer for the passive dispatcher
 #elif defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 45 + CDH_CHANNELS  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
+    TLMCHAN_HASH_BUCKETS = 45 + SERVICE_CHANNELS  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
 #elif defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 39 + CDH_CHANNELS  //!< PassiveCmdDispatcher has no channels, CommandDispatcher three
+    TLMCHAN_HASH_BUCKETS = 39 + SERVICE_CHANNELS  //!< PassiveCmdDispatcher has no channels, CommandDispatcher three
 #else
-    TLMCHAN_HASH_BUCKETS = 42 + CDH_CHANNELS  //!< Buckets: at least the number of channels
+    TLMCHAN_HASH_BUCKETS = 42 + SERVICE_CHANNELS  //!< Buckets: at least the number of channels
 #endif
 };
 }  // namespace

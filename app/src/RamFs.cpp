@@ -34,11 +34,39 @@ namespace {
 
 using Os::Baremetal::MicroFs;
 
-constexpr FwSizeType FILES = CONFIG_KIT_RAMFS_FILES;
-constexpr FwSizeType FILE_BYTES = CONFIG_KIT_RAMFS_FILE_SIZE;
-// MicroFs's layout: every file's state, then every file's data
-constexpr FwSizeType REGION_BYTES = FILES * (sizeof(MicroFs::MicroFsFileState) + FILE_BYTES);
-static_assert(FILES > 0 && FILE_BYTES > 0, "CONFIG_KIT_RAMFS_FILES and CONFIG_KIT_RAMFS_FILE_SIZE must be positive");
+// The bins: the small files (the parameter database's, a scratch file),
+// and where the build has one the bulk file (the file downlink's)
+struct Bin {
+    FwSizeType files;
+    FwSizeType fileBytes;
+};
+constexpr Bin BINS[] = {
+    {CONFIG_KIT_RAMFS_FILES, CONFIG_KIT_RAMFS_FILE_SIZE},
+#if CONFIG_KIT_RAMFS_BULK_FILE_SIZE > 0
+    {1, CONFIG_KIT_RAMFS_BULK_FILE_SIZE},
+#endif
+};
+constexpr FwSizeType BIN_COUNT = sizeof(BINS) / sizeof(BINS[0]);
+static_assert(CONFIG_KIT_RAMFS_FILES > 0 && CONFIG_KIT_RAMFS_FILE_SIZE > 0,
+              "CONFIG_KIT_RAMFS_FILES and CONFIG_KIT_RAMFS_FILE_SIZE must be positive");
+
+constexpr FwSizeType totalFiles() {
+    FwSizeType files = 0;
+    for (FwSizeType bin = 0; bin < BIN_COUNT; bin++) {
+        files += BINS[bin].files;
+    }
+    return files;
+}
+constexpr FwSizeType totalDataBytes() {
+    FwSizeType bytes = 0;
+    for (FwSizeType bin = 0; bin < BIN_COUNT; bin++) {
+        bytes += BINS[bin].files * BINS[bin].fileBytes;
+    }
+    return bytes;
+}
+constexpr FwSizeType FILES = totalFiles();
+// MicroFs's layout: every file's state, then every file's data, bin by bin
+constexpr FwSizeType REGION_BYTES = FILES * sizeof(MicroFs::MicroFsFileState) + totalDataBytes();
 
 // What a warm restart finds: the layout it describes, and a check over it.
 // A cold start's RAM is whatever it powered up as; a header that matches
@@ -56,7 +84,11 @@ __noinit Header s_header;
 
 U32 layoutWord() {
     const U32 address = static_cast<U32>(reinterpret_cast<PlatformPointerCastType>(&s_region[0]));
-    return (static_cast<U32>(FILES) << 24) ^ (static_cast<U32>(FILE_BYTES) << 8) ^ address;
+    U32 layout = address;
+    for (FwSizeType bin = 0; bin < BIN_COUNT; bin++) {
+        layout = (layout * 31u) ^ (static_cast<U32>(BINS[bin].files) << 24) ^ static_cast<U32>(BINS[bin].fileBytes);
+    }
+    return layout;
 }
 
 U32 checkWord(U32 magic, U32 layout) {
@@ -65,8 +97,10 @@ U32 checkWord(U32 magic, U32 layout) {
 
 MicroFs::MicroFsConfig configuration() {
     MicroFs::MicroFsConfig config = {};
-    MicroFs::MicroFsSetCfgBins(config, 1);
-    MicroFs::MicroFsAddBin(config, 0, FILE_BYTES, FILES);
+    MicroFs::MicroFsSetCfgBins(config, static_cast<FwIndexType>(BIN_COUNT));
+    for (FwSizeType bin = 0; bin < BIN_COUNT; bin++) {
+        MicroFs::MicroFsAddBin(config, static_cast<FwIndexType>(bin), BINS[bin].fileBytes, BINS[bin].files);
+    }
     return config;
 }
 
@@ -93,11 +127,17 @@ class RegionAllocator final : public Fw::MemAllocator {
 // data where the layout puts it, its size within it
 bool statesCheck() {
     const MicroFs::MicroFsFileState* const states = reinterpret_cast<const MicroFs::MicroFsFileState*>(&s_region[0]);
-    const U8* const data = reinterpret_cast<const U8*>(&states[FILES]);
-    for (FwSizeType file = 0; file < FILES; file++) {
-        const MicroFs::MicroFsFileState& state = states[file];
-        if (state.data != data + file * FILE_BYTES || state.dataSize != FILE_BYTES || state.currSize > FILE_BYTES) {
-            return false;
+    const U8* data = reinterpret_cast<const U8*>(&states[FILES]);
+    FwSizeType file = 0;
+    for (FwSizeType bin = 0; bin < BIN_COUNT; bin++) {
+        const FwSizeType bytes = BINS[bin].fileBytes;
+        for (FwSizeType slot = 0; slot < BINS[bin].files; slot++) {
+            const MicroFs::MicroFsFileState& state = states[file];
+            if (state.data != data || state.dataSize != bytes || state.currSize > bytes) {
+                return false;
+            }
+            data += bytes;
+            file++;
         }
     }
     return true;

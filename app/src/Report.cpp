@@ -162,8 +162,9 @@ void linkReady() {
 
 void fileSystem(RamFs::Mount mount) {
 #if defined(CONFIG_KIT_RAMFS)
-    printk("KIT RAMFS mount=%s files=%u file_bytes=%u bytes=%u\n", mount == RamFs::Mount::KEPT ? "kept" : "formatted",
-           static_cast<unsigned>(CONFIG_KIT_RAMFS_FILES), static_cast<unsigned>(CONFIG_KIT_RAMFS_FILE_SIZE),
+    printk("KIT RAMFS mount=%s files=%u file_bytes=%u bulk_bytes=%u bytes=%u\n",
+           mount == RamFs::Mount::KEPT ? "kept" : "formatted", static_cast<unsigned>(CONFIG_KIT_RAMFS_FILES),
+           static_cast<unsigned>(CONFIG_KIT_RAMFS_FILE_SIZE), static_cast<unsigned>(CONFIG_KIT_RAMFS_BULK_FILE_SIZE),
            static_cast<unsigned>(RamFs::regionBytes()));
 #else
     FW_ASSERT(mount == RamFs::Mount::ABSENT, static_cast<FwAssertArgType>(mount));

@@ -12,6 +12,7 @@ on its telemetry, never on the host's clock.
 from __future__ import annotations
 
 import time
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -213,3 +214,59 @@ def test_damaged_parameter_file_at_restart_leaves_defaults(fprime_test_api: Any)
         api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
     finally:
         _save_kp(api, kp_default)
+
+
+# The file downlink: the bulk file filled with the kit's pattern from this
+# seed (Load.FILL_FILE), asked for far past any board's bulk file so that the
+# whole file is filled, then sent to the ground
+FILL_SEED = 0x4B495431
+FILL_ASK_BYTES = 1 << 20
+# Issue 32's floor for the file a board's RAM file system holds (qemu_cortex_m3: 2 KiB)
+BULK_MIN_BYTES = 2048
+# 16 KiB at 115200 baud is about 2 s of the link; the rest is margin for a
+# loaded host (the station runs QEMU in real time)
+DOWNLINK_S = 60
+# The ground's file is complete a moment after the deployment's FileSent
+WRITTEN_S = 10.0
+
+
+def pattern(seed: int, count: int) -> bytes:
+    """The kit's test pattern (Load::Pattern, app/Components/Load/Load.hpp):
+    a 32-bit xorshift (13, 17, 5) stream, its low byte per step."""
+    state = seed
+    out = bytearray(count)
+    for index in range(count):
+        state ^= (state << 13) & 0xFFFFFFFF
+        state ^= state >> 17
+        state ^= (state << 5) & 0xFFFFFFFF
+        out[index] = state & 0xFF
+    return bytes(out)
+
+
+def test_file_downlinked_byte_for_byte(fprime_test_api: Any) -> None:
+    """The bulk file of the RAM file system, filled with the kit's pattern,
+    reaches the ground through Svc.FileDownlink and fprime-gds's downlinker
+    with every byte as the pattern says (at least 2 KiB: the bulk file's
+    size is the board's, CONFIG_KIT_RAMFS_BULK_FILE_SIZE)."""
+    api = fprime_test_api
+    if "Kit.fileDownlink.SendFile" not in api.dictionaries.command_name:
+        pytest.skip("this board's profile leaves F´'s file downlink out for this model")
+    bulk = str(api.dictionaries.constant_name["Kit.RamFs.bulkFile"])
+    api.send_and_assert_command("Kit.load.FILL_FILE", [bulk, FILL_ASK_BYTES, FILL_SEED], max_delay=TIMEOUT_S)
+    filled = api.assert_event("Kit.load.FileFilled", timeout=TIMEOUT_S)
+    size = int(filled.get_args()[1].val)
+    assert size >= BULK_MIN_BYTES, f"the bulk file holds {size} B, under {BULK_MIN_BYTES}"
+    destination = f"kit-bulk-{size}.bin"
+    api.send_and_assert_command("Kit.fileDownlink.SendFile", [bulk, destination], max_delay=DOWNLINK_S)
+    api.assert_event("Kit.fileDownlink.FileSent", timeout=TIMEOUT_S)
+    received = Path(api.pipeline.down_store) / destination
+    deadline = time.monotonic() + WRITTEN_S
+    while time.monotonic() < deadline and (not received.is_file() or received.stat().st_size < size):
+        time.sleep(0.1)
+    assert received.is_file(), f"fprime-gds wrote no {received}"
+    data = received.read_bytes()
+    expected = pattern(FILL_SEED, size)
+    mismatch = next((index for index, (got, want) in enumerate(zip(data, expected, strict=False)) if got != want),
+                    None)
+    assert len(data) == size and mismatch is None, (
+        f"{received}: {len(data)} B of {size}, first difference at byte {mismatch}")

@@ -6,6 +6,8 @@
 #include "app/Components/Load/Load.hpp"
 #include "app/Components/Timing/Busy.hpp"
 
+#include <Os/File.hpp>
+
 namespace Kit {
 
 Load::Load(const char* const compName)
@@ -105,6 +107,43 @@ void Load::SET_DOWNLINK_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 packets)
     }
     m_downlinkPackets = packets;
     this->log_ACTIVITY_HI_DownlinkLoadSet(packets);
+    this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
+}
+
+void Load::FILL_FILE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, const Fw::CmdStringArg& file, U32 bytes, U32 seed) {
+    if (seed == 0) {
+        // xorshift's one fixed point: a stream of zeros
+        this->log_WARNING_LO_LoadRejected(seed, 0);
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
+        return;
+    }
+    Os::File out;
+    Os::File::Status status = out.open(file.toChar(), Os::File::OPEN_CREATE, Os::File::OverwriteType::OVERWRITE);
+    U32 written = 0;
+    Pattern pattern(seed);
+    // Bounded: each pass writes a whole chunk or ends the loop; a file
+    // system that is full writes less (MicroFs: what its file holds)
+    while (status == Os::File::OP_OK && written < bytes) {
+        U8 chunk[FILL_CHUNK_BYTES];
+        const U32 left = bytes - written;
+        const FwSizeType wanted = left < FILL_CHUNK_BYTES ? left : FILL_CHUNK_BYTES;
+        for (FwSizeType index = 0; index < wanted; index++) {
+            chunk[index] = pattern.next();
+        }
+        FwSizeType size = wanted;
+        status = out.write(chunk, size, Os::File::WaitType::NO_WAIT);
+        written += static_cast<U32>(size);
+        if (size < wanted) {
+            break;
+        }
+    }
+    out.close();
+    if (status != Os::File::OP_OK || written == 0) {
+        this->log_WARNING_LO_FileNotFilled(file, written, static_cast<I32>(status));
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::EXECUTION_ERROR);
+        return;
+    }
+    this->log_ACTIVITY_HI_FileFilled(file, written, seed);
     this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
 }
 

@@ -47,6 +47,16 @@ module Kit {
             perSlice: U32 @< Events per slice message, at most DOWNLINK_MAX
         ) opcode 2
 
+        @ Fill a file with the kit's test pattern (a 32-bit xorshift stream
+        @ from the seed, its low byte per byte: Load.hpp, Pattern), as much of
+        @ it as the file system takes: the file a downlink sends and the
+        @ ground checks byte for byte
+        sync command FILL_FILE(
+            file: string size FileNameStringSize @< The file's path
+            bytes: U32 @< The bytes asked for; fewer where the file is smaller
+            seed: U32 @< The pattern's seed, not 0
+        ) opcode 3
+
         event LoadSet(sliceUs: U32, burst: U32, burstUs: U32) severity activity high id 0 format "Load: {} us per slice, bursts of {} x {} us"
 
         event LoadRejected(value: U32, limit: U32) severity warning low id 1 format "Load setting {} is above its limit {}"
@@ -58,6 +68,10 @@ module Kit {
 
         @ One extra downlink packet (SET_DOWNLINK); its number counts them all
         event DownlinkLoadPacket(sequence: U32) severity activity low id 4 format "Downlink load packet {}"
+
+        event FileFilled(file: string size FileNameStringSize, bytes: U32, seed: U32) severity activity high id 5 format "File {} filled: {} bytes of the pattern from seed {}"
+
+        event FileNotFilled(file: string size FileNameStringSize, written: U32, status: I32) severity warning low id 6 format "File {} not filled: {} bytes written, file status {}"
 
         @ Slice and burst messages processed
         telemetry Processed: U32 id 0

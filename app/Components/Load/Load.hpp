@@ -21,6 +21,26 @@ class Load final : public LoadComponentBase {
     //! Extra downlink packets per slice message (the events queue holds 8)
     static constexpr U32 DOWNLINK_MAX = 16;
 
+    //! The pattern FILL_FILE writes: a 32-bit xorshift stream (Marsaglia's
+    //! 13, 17, 5), one byte per step, its low byte. No byte repeats with a
+    //! short period, so a lost, repeated or reordered chunk of a transfer
+    //! shows; the ground recomputes it (tests/integration/test_ground.py).
+    class Pattern {
+      public:
+        explicit Pattern(U32 seed) : m_state(seed) {}
+        U8 next() {
+            m_state ^= m_state << 13;
+            m_state ^= m_state >> 17;
+            m_state ^= m_state << 5;
+            return static_cast<U8>(m_state & 0xFFu);
+        }
+
+      private:
+        U32 m_state;
+    };
+    //! Bytes FILL_FILE writes per call of the file system (its stack buffer)
+    static constexpr FwSizeType FILL_CHUNK_BYTES = 32;
+
     explicit Load(const char* const compName);
     ~Load();
 
@@ -39,6 +59,11 @@ class Load final : public LoadComponentBase {
     void SET_SLICE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 us) override;
     void SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 us) override;
     void SET_DOWNLINK_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 packets) override;
+    void FILL_FILE_cmdHandler(FwOpcodeType opCode,
+                              U32 cmdSeq,
+                              const Fw::CmdStringArg& file,
+                              U32 bytes,
+                              U32 seed) override;
 
     //! A message the queue could not take
     void dropOne();

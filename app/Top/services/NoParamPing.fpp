@@ -3,6 +3,9 @@
 # database. ParamPing.fpp beside it is the build with both.
 module Kit {
 
+  @ No entry for the database: the next entry is where it would be
+  constant pingEntriesToParams = pingEntriesToRateGroups
+
   @ No entry for the parameter database
   topology ParamHealth {
 

@@ -4,6 +4,9 @@
 # NoParamPing.fpp beside it is the build without.
 module Kit {
 
+  @ Health's entries up to the database's: the next entry's index
+  constant pingEntriesToParams = pingEntriesToRateGroups + 1
+
   @ The parameter database's ping
   topology ParamHealth {
 

@@ -17,6 +17,7 @@ _LEVERS = {
     "flash": "F´'s configuration (app/config/) and the components built in",
     "RAM": "F´'s health and version services (CONFIG_KIT_SERVICE_CDH=n in the board's Kconfig.defconfig, "
            "about 8 KiB), its parameter database (CONFIG_KIT_SERVICE_PARAMS=n, 4 to 6 KiB with its thread), "
+           "its file downlink (CONFIG_KIT_SERVICE_FILES=n, 5.6 KiB with a 2 KiB file), "
            "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE (app/Kconfig), the queue depths "
            "(app/Top/instances.fpp), the stack table (Tables.fpp), F´'s configuration (app/config/)",
 }

@@ -100,6 +100,8 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
     with ground.GroundStation(build, logs) as station:
         run_logged([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
               *(["-k", select] if select else []), *station.client_arguments(), "--logs", str(logs / "api"),
+              # the test client's own file downlinks (the station's are in its logs' files/)
+              "--file-storage-directory", str(logs / "api-files"),
               f"--junitxml={xml}"],
              logs / "pytest.log")
         console_text = station.console()

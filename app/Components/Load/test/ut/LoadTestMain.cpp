@@ -27,6 +27,16 @@ TEST(Load, EverySliceSendsTheCommandedDownlinkPackets) {
     tester.everySliceSendsTheCommandedDownlinkPackets();
 }
 
+TEST(Load, PatternIsXorshift32sLowBytes) {
+    Kit::LoadTester tester;
+    tester.patternIsXorshift32sLowBytes();
+}
+
+TEST(Load, FillFileWritesThePatternOrRefuses) {
+    Kit::LoadTester tester;
+    tester.fillFileWritesThePatternOrRefuses();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

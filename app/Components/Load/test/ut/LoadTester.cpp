@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 
 #include "app/Components/Load/test/ut/LoadTester.hpp"
+#include <Os/File.hpp>
+#include <Os/FileSystem.hpp>
 #include "app/Components/Timing/test/ut/FakeTickClock.hpp"
 
 namespace Kit {
@@ -92,6 +94,46 @@ void LoadTester::aFullQueueDropsCountsAndReports() {
         ASSERT_EQ(this->component.doDispatch(), Fw::QueuedComponentBase::MSG_DISPATCH_OK);
     }
     EXPECT_EQ(this->component.processed(), depth);
+}
+
+void LoadTester::patternIsXorshift32sLowBytes() {
+    // xorshift32 (13, 17, 5) from seed 1: 270369, 67634689, 2647435461,
+    // worked from its definition; the ground's copy is held to the same
+    // values (scripts/tests/test_ground_pattern.py)
+    Load::Pattern pattern(1);
+    EXPECT_EQ(pattern.next(), static_cast<U8>(270369u & 0xFFu));
+    EXPECT_EQ(pattern.next(), static_cast<U8>(67634689u & 0xFFu));
+    EXPECT_EQ(pattern.next(), static_cast<U8>(2647435461u & 0xFFu));
+}
+
+void LoadTester::fillFileWritesThePatternOrRefuses() {
+    // The host's file system (F´'s POSIX Os::File), a file in the test's folder
+    const char* const path = "load-fill-test.bin";
+    const Fw::CmdStringArg name(path);
+    this->sendCmd_FILL_FILE(0, 1, name, 100, 0);
+    ASSERT_CMD_RESPONSE(0, LoadComponentBase::OPCODE_FILL_FILE, 1, Fw::CmdResponse::VALIDATION_ERROR);
+    this->sendCmd_FILL_FILE(0, 2, name, 100, 7);
+    ASSERT_CMD_RESPONSE(1, LoadComponentBase::OPCODE_FILL_FILE, 2, Fw::CmdResponse::OK);
+    ASSERT_EVENTS_FileFilled_SIZE(1);
+    ASSERT_EVENTS_FileFilled(0, path, 100, 7);
+    Os::File in;
+    ASSERT_EQ(in.open(path, Os::File::OPEN_READ), Os::File::OP_OK);
+    U8 data[128];
+    FwSizeType size = sizeof(data);
+    ASSERT_EQ(in.read(data, size), Os::File::OP_OK);
+    in.close();
+    ASSERT_EQ(size, 100u);
+    Load::Pattern pattern(7);
+    for (FwSizeType index = 0; index < size; index++) {
+        EXPECT_EQ(data[index], pattern.next()) << "byte " << index;
+    }
+    // Leaves nothing behind in the folder the tests ran in
+    ASSERT_EQ(Os::FileSystem::removeFile(path), Os::FileSystem::OP_OK);
+    // A file that cannot be opened: its status, nothing written
+    const Fw::CmdStringArg nowhere("no-such-folder/fill.bin");
+    this->sendCmd_FILL_FILE(0, 3, nowhere, 100, 7);
+    ASSERT_CMD_RESPONSE(2, LoadComponentBase::OPCODE_FILL_FILE, 3, Fw::CmdResponse::EXECUTION_ERROR);
+    ASSERT_EVENTS_FileNotFilled_SIZE(1);
 }
 
 }  // namespace Kit

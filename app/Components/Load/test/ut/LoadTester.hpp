@@ -22,6 +22,8 @@ class LoadTester : public LoadGTestBase {
     void burstPushesTheCommandedMessages();
     void aFullQueueDropsCountsAndReports();
     void everySliceSendsTheCommandedDownlinkPackets();
+    void patternIsXorshift32sLowBytes();
+    void fillFileWritesThePatternOrRefuses();
 
   private:
     void connectPorts();

@@ -1,0 +1,14 @@
+# SPDX-License-Identifier: Apache-2.0
+# No file downlink: the board's profile leaves it out for this model
+# (CONFIG_KIT_SERVICE_FILES=n). FileServices.fpp beside it is the build
+# with it.
+module Kit {
+
+  @ No file downlink
+  topology FileServices {
+
+    instance comQueue
+
+  }
+
+}
