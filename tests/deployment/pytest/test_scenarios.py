@@ -77,7 +77,9 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
     ]
 
 
-RAM_FILE_SYSTEM_COLD = r"KIT RAMFS mount=(absent|formatted files=[1-9][0-9]* file_bytes=[1-9][0-9]* bytes=[1-9][0-9]*)$"
+# bulk_bytes: the file downlink's file, 0 where the build has none
+RAM_FILE_SYSTEM_COLD = (r"KIT RAMFS mount=(absent|formatted files=[1-9][0-9]* file_bytes=[1-9][0-9]* "
+                        r"bulk_bytes=[0-9]+ bytes=[1-9][0-9]*)$")
 
 HEALTH_AT_REST = (r"KIT HEALTH services=(absent|present entries=[1-9][0-9]* warnings=0 fatals=0)$")
 
