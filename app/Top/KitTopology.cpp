@@ -150,6 +150,15 @@ LinkHealth::UartCounts linkUartCounts() {
     return {counts.received, counts.ringDrops, counts.overruns, counts.parity, counts.framing, counts.breaks};
 }
 
+// The event service's free queue slots, for LinkHealth's shedding of ground
+// commands whose events would fill it
+FwSizeType eventServiceRoom() {
+    const Os::Queue& queue = QueueOf::of(events);
+    const FwSizeType held = queue.getMessagesAvailable();
+    const FwSizeType depth = queue.getDepth();
+    return held < depth ? depth - held : 0;
+}
+
 // F´'s ComFprime chain (Svc/Subtopologies/ComFprime/ComFprime.fpp), with
 // the kit's sizes (Kit.Link in instances.fpp) instead of a Linux host's
 // The F´ allocator's memory IDs of TlmLinearChan's table
@@ -168,7 +177,7 @@ void configureLink(Fw::MemAllocator& allocator) {
     linkBuffers.setup(Link::bufferManagerId, 0, allocator, bins);
 
     // F´'s F´-protocol detector, wrapped to count what it rejects
-    linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight, linkUartCounts);
+    linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight, linkUartCounts, eventServiceRoom);
     frameAccumulator.configure(linkHealth.detector(), 1, allocator, Link::accumulatorSize);
 
     // Events first, then telemetry, then the file downlink's packets (one at

@@ -252,6 +252,11 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
     assert play() == (True, False)
     _fake_twister(monkeypatch, commands)
     assert play() == (False, True)  # after a failed run: configure again (a configure may have failed)
+    assert play() == (True, False)
+    kconfig = tmp_path / "app" / "Kconfig"
+    kconfig.parent.mkdir()
+    kconfig.write_text("config KIT_X\n\tint\n\tdefault 1\n")
+    assert play() == (False, True)  # a Kconfig default changed: Zephyr would keep the old value
 
 
 def test_an_earlier_suites_kconfig_file_goes_with_its_cmake_cache(tmp_path, monkeypatch):
@@ -270,3 +275,22 @@ def test_an_earlier_suites_kconfig_file_goes_with_its_cmake_cache(tmp_path, monk
     assert not (build / "twister" / "testsuite_extra.conf").exists()
     assert not (build / "CMakeCache.txt").exists()  # configured from scratch
     assert (other / "CMakeCache.txt").exists()
+
+
+def test_a_build_configured_again_loses_its_last_kconfig(tmp_path, monkeypatch):
+    """Zephyr configures a build from its last .config when its fragments
+    did not change, which keeps the old value of a default the kit changed;
+    a run that configures again removes it."""
+    monkeypatch.setattr(twister, "KIT_ROOT", tmp_path)
+    monkeypatch.setattr(twister, "environment", lambda: {})
+    out_dir = tmp_path / "out"
+    dotconfig = out_dir / "qemu_cortex_m3_ti_lm3s6965" / "deployment" / "kit.rtos" / "zephyr" / ".config"
+    dotconfig.parent.mkdir(parents=True)
+    (dotconfig.parent.parent / "CMakeCache.txt").write_text("\n")
+    dotconfig.write_text("CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=14848\n")
+    _fake_twister(monkeypatch, [])
+    twister.play(["west", "twister"], tmp_path / "t.log", out_dir)
+    assert not dotconfig.exists()
+    dotconfig.write_text("CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=16128\n")
+    twister.play(["west", "twister"], tmp_path / "t.log", out_dir)
+    assert dotconfig.exists()  # as configured then: kept

@@ -14,13 +14,19 @@ LinkHealth::LinkHealth(const char* const compName)
       m_inFlight(0),
       m_commandsDropped(0),
       m_inFlightLimit(0),
-      m_uartCounts(nullptr) {}
+      m_uartCounts(nullptr),
+      m_eventRoom(nullptr) {}
 
 LinkHealth::~LinkHealth() {}
 
-void LinkHealth::configure(FwSizeType accumulatorSize, U32 commandsInFlight, UartCountsSource uartCounts) {
+void LinkHealth::configure(FwSizeType accumulatorSize,
+                           U32 commandsInFlight,
+                           UartCountsSource uartCounts,
+                           EventRoomSource eventRoom) {
     FW_ASSERT(commandsInFlight > 0);
     FW_ASSERT(uartCounts != nullptr);
+    FW_ASSERT(eventRoom != nullptr);
+    m_eventRoom = eventRoom;
     m_detector.setCapacity(accumulatorSize);
     m_inFlightLimit = commandsInFlight;
     m_uartCounts = uartCounts;
@@ -50,10 +56,12 @@ void LinkHealth::commandIn_handler(FwIndexType portNum, Fw::ComBuffer& data, U32
     (void)portNum;
     FW_ASSERT(m_inFlightLimit > 0);  // configure() first
     const U32 inFlight = m_inFlight.load();
-    if (inFlight >= m_inFlightLimit) {
-        // Only the link's context sends: the count cannot rise meanwhile
+    const FwSizeType room = m_eventRoom();
+    if (inFlight >= m_inFlightLimit || room < EVENT_ROOM_PER_COMMAND) {
+        // Only the link's context sends: the count cannot rise meanwhile.
+        // The event below is dropped, not queued, where the room is short.
         const U32 dropped = m_commandsDropped.fetch_add(1) + 1;
-        this->log_WARNING_HI_CommandDropped(inFlight, dropped);
+        this->log_WARNING_HI_CommandDropped(inFlight, static_cast<U32>(room), dropped);
         return;
     }
     m_inFlight.fetch_add(1);

@@ -42,7 +42,7 @@ module Kit {
         text event port logTextOut
 
         @ A ground command arrived with the limit in flight: dropped
-        event CommandDropped(inFlight: U32, total: U32) severity warning high id 0 format "Ground command dropped: {} already in flight to the dispatcher ({} dropped in all)" throttle 5
+        event CommandDropped(inFlight: U32, eventRoom: U32, total: U32) severity warning high id 0 format "Ground command dropped: {} in flight to the dispatcher, room for {} messages at the event service ({} dropped in all)" throttle 5
 
         telemetry port tlmOut
 

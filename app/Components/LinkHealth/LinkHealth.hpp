@@ -27,6 +27,17 @@ class LinkHealth final : public LinkHealthComponentBase {
     //! Reads the link UART's counts (the topology knows the driver; this
     //! component does not, so that its unit test needs no UART)
     using UartCountsSource = UartCounts (*)();
+    //! Free message slots in the event service's queue (the topology knows
+    //! the event service; this component does not)
+    using EventRoomSource = FwSizeType (*)();
+    //! Room a ground command needs there to be sent on: the events it can
+    //! raise on its way (the dispatcher's dispatched and completed, its
+    //! handler's one) and health's ping of the event service. F´ asserts
+    //! when that ping finds the queue full, where the events themselves are
+    //! dropped: a flood of commands whose events outrun the event service
+    //! (the serial-load sweep's uplink axis on qemu_cortex_m3's budgeted
+    //! policy, a fresh-clone run) halted the deployment that way.
+    static constexpr FwSizeType EVENT_ROOM_PER_COMMAND = 4;
 
     explicit LinkHealth(const char* const compName);
     ~LinkHealth();
@@ -34,7 +45,11 @@ class LinkHealth final : public LinkHealthComponentBase {
     //! \param accumulatorSize the FrameAccumulator's ring size
     //! \param commandsInFlight ground commands the dispatcher may hold at once
     //! \param uartCounts the link UART's receive counts
-    void configure(FwSizeType accumulatorSize, U32 commandsInFlight, UartCountsSource uartCounts);
+    //! \param eventRoom the event service's free queue slots
+    void configure(FwSizeType accumulatorSize,
+                   U32 commandsInFlight,
+                   UartCountsSource uartCounts,
+                   EventRoomSource eventRoom);
 
     //! The detector the FrameAccumulator is configured with
     const Svc::FrameDetector& detector() const { return m_detector; }
@@ -59,6 +74,7 @@ class LinkHealth final : public LinkHealthComponentBase {
     std::atomic<U32> m_commandsDropped;
     U32 m_inFlightLimit;
     UartCountsSource m_uartCounts;
+    EventRoomSource m_eventRoom;
 };
 
 }  // namespace Kit

@@ -65,6 +65,12 @@ class BuildFolder:
         hold a linked image."""
         return [BuildFolder(elf.parents[len(Path(ELF).parts) - 1]) for elf in root.glob(f"**/{name}/{ELF}")]
 
+    @staticmethod
+    def configured_under(root: Path) -> list[BuildFolder]:
+        """The build folders under `root` (at any depth) that CMake
+        configured, linked or not."""
+        return [BuildFolder(cache.parent) for cache in root.glob(f"**/{CMAKE_CACHE}")]
+
     # --- Paths ----------------------------------------------------------
 
     @property

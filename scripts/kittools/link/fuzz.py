@@ -160,7 +160,8 @@ class Outcome:
              self.sent["unknown_packet"]),
             ("cmdDisp's refusal events (" + ", ".join(e.removeprefix("Kit.cmdDisp.") for e in DISPATCHER_REFUSALS)
              + ")", sum(self.events[e] for e in DISPATCHER_REFUSALS), bad_commands),
-            # Paced by its NO_OPs, the fuzzer never has more commands in flight than the link lets through
+            # Paced by its NO_OPs, the fuzzer never has more commands in flight than the link lets through,
+            # nor fills the event service's queue (LinkHealth sheds commands then)
             ("LinkHealth.CommandsDropped", self.telemetry.get("Kit.linkHealth.CommandsDropped"), 0),
             # Each batch fits the UART driver's ring, and waits for its NO_OP's answer
             ("LinkHealth.UartRingDrops", self.telemetry.get("Kit.linkHealth.UartRingDrops"), 0),

@@ -158,15 +158,25 @@ CONFIGURED_FROM = "kit-configured-from.sha256"
 _CONFIGURE_ENVIRONMENT = ("ZEPHYR_TOOLCHAIN_VARIANT", "GNUARMEMB_TOOLCHAIN_PATH", "ZEPHYR_SDK_INSTALL_DIR")
 
 
+#: The kit's Kconfig files: the models', the deployment's, the boards' defaults, the modules'
+_KCONFIG_FILES = ("app/**/Kconfig*", "*/Kconfig.model", "boards/**/Kconfig*", "modules/**/Kconfig*")
+
+
 def configured_from() -> str:
     """What twister configures the kit's builds from that their own build
     files do not track: every test suite's testcase.yaml (twister hands its
-    extra_args to CMake once) and the toolchain's environment. Everything
-    else a configuration reads (CMake and Kconfig files, .conf fragments,
+    extra_args to CMake once), the toolchain's environment, and the kit's
+    Kconfig files. Ninja configures again when a Kconfig file changes, but
+    Zephyr then takes the build's last .config as input (its .conf
+    fragments unchanged), which keeps every prompted symbol's old value: a
+    changed default reaches a build only configured from scratch (play).
+    Everything else a configuration reads (CMake files, .conf fragments,
     snippets, F´'s FPP files) is a configure dependency ninja checks itself."""
     digest = hashlib.sha256()
     for suite in sorted(KIT_ROOT.glob("tests/**/testcase.yaml")):
         digest.update(f"{suite.relative_to(KIT_ROOT)}\0".encode() + suite.read_bytes() + b"\0")
+    for kconfig in sorted({path for pattern in _KCONFIG_FILES for path in KIT_ROOT.glob(pattern) if path.is_file()}):
+        digest.update(f"{kconfig.relative_to(KIT_ROOT)}\0".encode() + kconfig.read_bytes() + b"\0")
     env = environment()
     for name in _CONFIGURE_ENVIRONMENT:
         digest.update(f"{name}={env.get(name, '')}\0".encode())
@@ -187,6 +197,10 @@ def play(command: list[str], log: Path, out_dir: Path) -> Tally:
     reuse = stamp.is_file() and stamp.read_text().strip() == fingerprint
     stamp.unlink(missing_ok=True)
     if not reuse:
+        # Each build's Kconfig from its fragments and the kit's Kconfig
+        # defaults as they are now, not from its last .config (configured_from)
+        for build in BuildFolder.configured_under(out_dir):
+            build.config.unlink(missing_ok=True)
         # The Kconfig file twister wrote for an earlier suite's extra_configs:
         # twister hands any it finds to CMake, whatever the suite says now
         # (the kit's suites set Kconfig through extra_args: testcase.yaml).

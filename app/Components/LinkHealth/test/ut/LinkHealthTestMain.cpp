@@ -32,6 +32,11 @@ TEST(LinkHealth, ALengthThatWrapsTheFrameSizeIsOversized) {
     tester.aLengthThatWrapsTheFrameSizeIsOversized();
 }
 
+TEST(LinkHealth, ACommandWithoutRoomForItsEventsIsDropped) {
+    Kit::LinkHealthTester tester;
+    tester.aCommandWithoutRoomForItsEventsIsDropped();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -37,6 +37,10 @@ void fprimeFrame(U8 (&frame)[FRAME_SIZE], U32 lengthField) {
 }
 
 //! The link UART's counts as the test sets them (the topology reads the driver's)
+FwSizeType s_eventRoom = 0;
+FwSizeType eventRoom() {
+    return s_eventRoom;
+}
 LinkHealth::UartCounts s_uartCounts = {};
 LinkHealth::UartCounts uartCounts() {
     return s_uartCounts;
@@ -59,7 +63,8 @@ LinkHealthTester::LinkHealthTester()
     this->initComponents();
     this->connectPorts();
     s_uartCounts = {};
-    this->component.configure(ACCUMULATOR_SIZE, IN_FLIGHT, uartCounts);
+    s_eventRoom = EVENT_QUEUE_DEPTH;
+    this->component.configure(ACCUMULATOR_SIZE, IN_FLIGHT, uartCounts, eventRoom);
 }
 
 LinkHealthTester::~LinkHealthTester() {}
@@ -80,8 +85,8 @@ void LinkHealthTester::commandsBeyondTheLimitAreDroppedAndCounted() {
         EXPECT_EQ(this->fromPortHistory_commandOut->at(i).context, i);
     }
     ASSERT_EVENTS_CommandDropped_SIZE(2);
-    ASSERT_EVENTS_CommandDropped(0, IN_FLIGHT, 1);
-    ASSERT_EVENTS_CommandDropped(1, IN_FLIGHT, 2);
+    ASSERT_EVENTS_CommandDropped(0, IN_FLIGHT, EVENT_QUEUE_DEPTH, 1);
+    ASSERT_EVENTS_CommandDropped(1, IN_FLIGHT, EVENT_QUEUE_DEPTH, 2);
     EXPECT_EQ(this->component.commandsDropped(), 2u);
     this->invoke_to_schedIn(0, 0);
     ASSERT_TLM_CommandsDropped(0, 2);
@@ -192,6 +197,24 @@ void LinkHealthTester::aLengthThatWrapsTheFrameSizeIsOversized() {
     }
     EXPECT_EQ(this->component.counts().oversized, 4u);
     EXPECT_EQ(this->component.counts().detected, 0u);
+}
+
+void LinkHealthTester::aCommandWithoutRoomForItsEventsIsDropped() {
+    // Room for one command's events and health's ping: it goes through
+    s_eventRoom = LinkHealth::EVENT_ROOM_PER_COMMAND;
+    this->sendCommand(0);
+    ASSERT_from_commandOut_SIZE(1);
+    // One slot short: dropped and counted, nothing sent on
+    s_eventRoom = LinkHealth::EVENT_ROOM_PER_COMMAND - 1;
+    this->sendCommand(1);
+    ASSERT_from_commandOut_SIZE(1);
+    ASSERT_EVENTS_CommandDropped_SIZE(1);
+    ASSERT_EVENTS_CommandDropped(0, 1, LinkHealth::EVENT_ROOM_PER_COMMAND - 1, 1);
+    EXPECT_EQ(this->component.commandsDropped(), 1u);
+    // Room again: the next one goes through
+    s_eventRoom = EVENT_QUEUE_DEPTH;
+    this->sendCommand(2);
+    ASSERT_from_commandOut_SIZE(2);
 }
 
 }  // namespace Kit
