@@ -32,6 +32,9 @@ constexpr FwSizeType ACTIVE_STACKS[] = {
 #if defined(CONFIG_KIT_SERVICE_FILES)
     Stacks::fileDownlink,  // the file downlink (app/Top/services/)
 #endif
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+    Stacks::fileUplink,  // the file uplink (app/Top/services/)
+#endif
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
 

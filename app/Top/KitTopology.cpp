@@ -40,6 +40,9 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
 #if defined(CONFIG_KIT_SERVICE_FILES)
     {"fileDownlink", &fileDownlink, sizeof(fileDownlink), &fileDownlink},
 #endif
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+    {"fileUplink", &fileUplink, sizeof(fileUplink), &fileUplink},
+#endif
 };
 
 #if defined(CONFIG_KIT_SERVICE_CDH)
@@ -67,6 +70,9 @@ const PingEntry PING_ENTRIES[PING_ENTRY_COUNT] = {
 #if defined(CONFIG_KIT_SERVICE_FILES)
     {"fileDownlink", &fileDownlinkPing},
 #endif
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+    {"fileUplink", &fileUplinkPing},
+#endif
 };
 }  // namespace
 
@@ -90,7 +96,7 @@ void startPingSegment() {
 namespace {
 // Members per rate group: the ports of the rate group class the build chose
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-constexpr FwIndexType RATE_GROUP_PORTS = PassiveRateGroupOutputPorts;  // app/config/AcConstants.fpp
+constexpr FwIndexType RATE_GROUP_PORTS = PassiveRateGroupOutputPorts;  // app/config/AcConstants.fpp.in
 #else
 constexpr FwIndexType RATE_GROUP_PORTS = Svc::ActiveRateGroup::CONNECTION_COUNT_MAX;
 #endif
@@ -171,13 +177,17 @@ constexpr FwEnumStoreType DISPATCHER_TABLES_ID = 3;
 FwSizeType s_linkBufferBytes = 0;
 
 void configureLink(Fw::MemAllocator& allocator) {
+    // A file packet's frame is the largest the ground sends, where the
+    // build takes file packets at all
+    const FwSizeType largestFrame = (FILE_UPLINKS > 0) ? Link::fileFrameSize : Link::bufferSize;
     Svc::BufferManager::BufferBins bins = {};
-    bins.bins[0].bufferSize = Link::bufferSize;
+    bins.bins[0].bufferSize = largestFrame;
     bins.bins[0].numBuffers = Link::bufferCount;
     linkBuffers.setup(Link::bufferManagerId, 0, allocator, bins);
 
-    // F´'s F´-protocol detector, wrapped to count what it rejects
-    linkHealth.configure(Link::accumulatorSize, Link::commandsInFlight, linkUartCounts, eventServiceRoom);
+    // F´'s F´-protocol detector, wrapped to count what it rejects: a frame
+    // no buffer holds among them
+    linkHealth.configure(Link::accumulatorSize, largestFrame, Link::commandsInFlight, linkUartCounts, eventServiceRoom);
     frameAccumulator.configure(linkHealth.detector(), 1, allocator, Link::accumulatorSize);
 
     // Events first, then telemetry, then the file downlink's packets (one at

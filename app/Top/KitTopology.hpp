@@ -23,7 +23,8 @@ struct ActiveInstance {
 };
 //! The active instances: events, tlmSend, load, comQueue, and the rate
 //! groups (app/Top/rategroups/) and the dispatcher (app/Top/dispatcher/)
-//! where the build has them in their active form
+//! where the build has them in their active form, and F´'s services where
+//! the build has them (app/Top/services/)
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
 constexpr FwSizeType ACTIVE_RATE_GROUPS = 0;
 #else
@@ -44,8 +45,13 @@ constexpr FwSizeType FILE_DOWNLINKS = 1;
 #else
 constexpr FwSizeType FILE_DOWNLINKS = 0;
 #endif
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+constexpr FwSizeType FILE_UPLINKS = 1;
+#else
+constexpr FwSizeType FILE_UPLINKS = 0;
+#endif
 constexpr FwSizeType ACTIVE_INSTANCE_COUNT =
-    4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + PARAMETER_DATABASES + FILE_DOWNLINKS;
+    4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + PARAMETER_DATABASES + FILE_DOWNLINKS + FILE_UPLINKS;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr
@@ -63,10 +69,9 @@ QueueUse queueUse(const ActiveInstance& instance);
 
 //! Svc.Health's ping entries: events, tlmSend, the dispatcher where it is
 //! active, the rate groups where the model pings them
-//! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS) and the parameter database where
-//! the build has it (CONFIG_KIT_SERVICE_PARAMS), then the file downlink
-//! where the build has it (CONFIG_KIT_SERVICE_FILES). Entry i is health's
-//! port i.
+//! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS), then the parameter database, the
+//! file downlink and the file uplink where the build has them. Entry i is
+//! health's port i.
 #if defined(CONFIG_KIT_SERVICE_CDH)
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
 constexpr FwSizeType PINGED_RATE_GROUPS = 3;
@@ -74,7 +79,7 @@ constexpr FwSizeType PINGED_RATE_GROUPS = 3;
 constexpr FwSizeType PINGED_RATE_GROUPS = 0;
 #endif
 constexpr FwIndexType PING_ENTRY_COUNT =
-    2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + PARAMETER_DATABASES + FILE_DOWNLINKS;
+    2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + PARAMETER_DATABASES + FILE_DOWNLINKS + FILE_UPLINKS;
 //! Name of ping entry `entry`
 const char* pingEntryName(FwIndexType entry);
 //! The probe timing ping entry `entry`'s round trips

@@ -46,6 +46,9 @@ enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 namespace Kit_fileDownlinkPing {
 enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 }
+namespace Kit_fileUplinkPing {
+enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
+}
 }  // namespace PingEntries
 
 namespace Kit {

@@ -37,6 +37,7 @@ module Kit {
     constant events = 3
     constant prmDb = 2
     constant fileDownlink = 2
+    constant fileUplink = 2
     constant load = 1
   }
 
@@ -58,6 +59,7 @@ module Kit {
     constant load = 2048
     constant prmDb = 2048
     constant fileDownlink = 2048
+    constant fileUplink = 2048
   }
 
 }

@@ -44,6 +44,11 @@ module Kit {
     @ The file downlink: its 10 Hz Run, each packet's buffer coming back,
     @ a command and health's ping
     constant fileDownlink = 5
+    @ The file uplink: each packet the router hands it holds one of the
+    @ link's buffers until it is written, so the queue takes every buffer
+    @ of the pool and health's ping, and never fills (F´ asserts on a
+    @ full queue; checked in app/src/TopologyChecks.cpp)
+    constant fileUplink = Link.bufferCount + 1
   }
 
   @ The RAM file system (fprime-baremetal's MicroFs, app/src/RamFs.cpp)
@@ -56,7 +61,8 @@ module Kit {
     dictionary constant parameterFile = "/bin0/file0"
     @ A file a ground test may write and load (PRM_LOAD_FILE)
     dictionary constant scratchFile = "/bin0/file1"
-    @ The file the file downlink's test fills (Load.FILL_FILE) and sends
+    @ The file the file downlink's test fills (Load.FILL_FILE) and sends,
+    @ and the file uplink's test writes
     dictionary constant bulkFile = "/bin1/file0"
   }
 
@@ -83,6 +89,11 @@ module Kit {
     @ (FW_COM_BUFFER_MAX_SIZE plus the F´ frame's 8 B header and 4 B CRC)
     @ and the UART's receive chunks
     constant bufferSize = 160
+    @ The pool's buffers where the build has the file uplink: a frame of
+    @ fprime-gds's largest file packet (its uplinker's 256 B of data, the
+    @ data packet's 11 B header and the 2 B packet descriptor, in F´'s
+    @ 12 B frame: 281 B), rounded to the allocator's 8 B
+    constant fileFrameSize = 288
     constant bufferCount = 6
     @ Uplink bytes the frame accumulator holds while a frame arrives
     @ (in the dictionary: the ground tools need it)
@@ -177,6 +188,7 @@ module Kit {
   instance cmdDispPing: Kit.PingProbe base id 0x2B50
   instance prmDbPing: Kit.PingProbe base id 0x2B60
   instance fileDownlinkPing: Kit.PingProbe base id 0x2B70
+  instance fileUplinkPing: Kit.PingProbe base id 0x2B80
 
   @ Where there is no parameter database: every parameter keeps its default
   instance paramDefaults: Kit.ParamDefaults base id 0x2D00
@@ -210,6 +222,14 @@ module Kit {
                                 FileDownlinkTimings::cycleMs, FileDownlinkTimings::fileQueueDepth);
     """
   }
+
+  @ F´'s file uplink (FileHandling's fileUplink): the ground's file packets
+  @ from the link's router, written to the RAM file system; each packet's
+  @ buffer goes back to the router's pool once written
+  instance fileUplink: Svc.FileUplink base id 0x2F00 \
+    queue size Queues.fileUplink \
+    stack size Stacks.fileUplink \
+    priority Priorities.fileUplink
 
   instance rateGroupDriver: Svc.RateGroupDriver base id 0x0400
 

@@ -52,6 +52,10 @@ module Kit {
     # (app/Top/services/)
     import FileServices
 
+    # F´'s file uplink to the RAM file system, with its ping
+    # (app/Top/services/)
+    import FileUplinkServices
+
     command connections instance cmdDisp
     event connections instance events
     telemetry connections instance tlmSend

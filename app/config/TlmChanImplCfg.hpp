@@ -19,7 +19,9 @@ enum {
 #else
     CDH_CHANNELS = 0,
 #endif
-#if defined(CONFIG_KIT_SERVICE_FILES)
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+    FILE_CHANNELS = 6,  //!< Svc.FileDownlink's 3 and Svc.FileUplink's 3 (app/Top/services/)
+#elif defined(CONFIG_KIT_SERVICE_FILES)
     FILE_CHANNELS = 3,  //!< Svc.FileDownlink's (app/Top/services/)
 #else
     FILE_CHANNELS = 0,

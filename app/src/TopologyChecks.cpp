@@ -32,5 +32,19 @@ static_assert(Link::commandsInFlight + 2 <= Queues::cmdDisp,
               "dispatcher's 10 Hz call and a scripted command");
 #endif
 
+#if defined(CONFIG_KIT_SERVICE_CDH)
+// Health's port arrays are sized by the count app/config/CMakeLists.txt
+// makes from Kconfig; the topology's entries must be exactly those
+static_assert(PING_ENTRY_COUNT == HealthPingPorts,
+              "HealthPingPorts (app/config/CMakeLists.txt) and PING_ENTRY_COUNT (app/Top/KitTopology.hpp) disagree");
+#endif
+
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+// The file uplink's queue asserts when full: each packet in it holds one of
+// the link's buffers, so it must take them all and health's ping
+static_assert(Link::bufferCount + 1 <= Queues::fileUplink,
+              "Queues.fileUplink (app/Top/instances.fpp) cannot hold a packet in every link buffer and a ping");
+#endif
+
 }  // namespace
 }  // namespace Kit

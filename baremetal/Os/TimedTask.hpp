@@ -29,7 +29,7 @@ class TimedTask final : public Os::Baremetal::BaremetalTask {
   public:
     //! The kit's table of timed tasks (the TaskRunner's own holds 100): the
     //! topology's active instances must fit (baremetal/ModelChecks.cpp)
-    static constexpr FwSizeType MAX_TASKS = 10;
+    static constexpr FwSizeType MAX_TASKS = CONFIG_KIT_BAREMETAL_TASKS;
 
     Status start(const Arguments& arguments) override;
 

@@ -152,3 +152,45 @@ def test_a_flood_accounts_for_every_byte_or_says_which_are_missing():
     assert any("no SWEEP lines" in f for f in failures)
     # Its segment's lines are not a point of the noise axis
     assert all(not line.startswith("KIT SWEEP") for line in outcome.to_json()["lines"])
+
+
+class _FakeClock:
+    """A clock that advances only when slept on, so pacing is exact."""
+
+    def __init__(self) -> None:
+        self.now = 100.0
+
+    def __call__(self) -> float:
+        return self.now
+
+    def sleep(self, seconds: float) -> None:
+        self.now += seconds
+
+
+def test_the_gds_adapter_writes_a_file_packet_at_the_line_rate():
+    """fprime-gds's 281 B file-packet frame leaves in pieces of 2 ms of the
+    line, and the last piece leaves when the line has carried the others."""
+    from kittools.link.gds_adapter import HostLine
+
+    clock = _FakeClock()
+    line = HostLine(115200, clock=clock, sleep=clock.sleep)
+    start = clock.now
+    pieces = list(line.pieces(bytes(281)))
+    assert b"".join(pieces) == bytes(281)
+    assert {len(piece) for piece in pieces[:-1]} == {23}
+    assert clock.now - start == pytest.approx((281 - len(pieces[-1])) / 11520)
+    # The next write waits for the line to carry the last piece
+    list(line.pieces(bytes(1)))
+    assert clock.now - start == pytest.approx(281 / 11520)
+
+
+def test_an_idle_line_banks_no_time():
+    from kittools.link.gds_adapter import HostLine
+
+    clock = _FakeClock()
+    line = HostLine(115200, clock=clock, sleep=clock.sleep)
+    list(line.pieces(bytes(10)))
+    clock.now += 60.0
+    start = clock.now
+    list(line.pieces(bytes(46)))
+    assert clock.now - start == pytest.approx(23 / 11520)

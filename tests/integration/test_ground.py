@@ -243,30 +243,79 @@ def pattern(seed: int, count: int) -> bytes:
     return bytes(out)
 
 
-def test_file_downlinked_byte_for_byte(fprime_test_api: Any) -> None:
-    """The bulk file of the RAM file system, filled with the kit's pattern,
-    reaches the ground through Svc.FileDownlink and fprime-gds's downlinker
-    with every byte as the pattern says (at least 2 KiB: the bulk file's
-    size is the board's, CONFIG_KIT_RAMFS_BULK_FILE_SIZE)."""
-    api = fprime_test_api
+def _bulk_file(api: Any, seed: int) -> tuple[str, int]:
+    """Fills the RAM file system's bulk file with the kit's pattern from
+    `seed` (Load.FILL_FILE, asked for more than any board's bulk file
+    holds); returns its name and the bytes it holds. Skips a test on a build
+    whose board profile leaves the file downlink out."""
     if "Kit.fileDownlink.SendFile" not in api.dictionaries.command_name:
         pytest.skip("this board's profile leaves F´'s file downlink out for this model")
     bulk = str(api.dictionaries.constant_name["Kit.RamFs.bulkFile"])
-    api.send_and_assert_command("Kit.load.FILL_FILE", [bulk, FILL_ASK_BYTES, FILL_SEED], max_delay=TIMEOUT_S)
+    api.send_and_assert_command("Kit.load.FILL_FILE", [bulk, FILL_ASK_BYTES, seed], max_delay=TIMEOUT_S)
     filled = api.assert_event("Kit.load.FileFilled", timeout=TIMEOUT_S)
     size = int(filled.get_args()[1].val)
     assert size >= BULK_MIN_BYTES, f"the bulk file holds {size} B, under {BULK_MIN_BYTES}"
-    destination = f"kit-bulk-{size}.bin"
-    api.send_and_assert_command("Kit.fileDownlink.SendFile", [bulk, destination], max_delay=DOWNLINK_S)
+    return bulk, size
+
+
+def _downlinked(api: Any, source: str, size: int, destination: str) -> bytes:
+    """Sends `source` to the ground (Svc.FileDownlink's SendFile); returns
+    what fprime-gds's downlinker wrote, once it holds `size` bytes."""
+    api.send_and_assert_command("Kit.fileDownlink.SendFile", [source, destination], max_delay=DOWNLINK_S)
     api.assert_event("Kit.fileDownlink.FileSent", timeout=TIMEOUT_S)
     received = Path(api.pipeline.down_store) / destination
     deadline = time.monotonic() + WRITTEN_S
     while time.monotonic() < deadline and (not received.is_file() or received.stat().st_size < size):
         time.sleep(0.1)
     assert received.is_file(), f"fprime-gds wrote no {received}"
-    data = received.read_bytes()
-    expected = pattern(FILL_SEED, size)
-    mismatch = next((index for index, (got, want) in enumerate(zip(data, expected, strict=False)) if got != want),
-                    None)
-    assert len(data) == size and mismatch is None, (
-        f"{received}: {len(data)} B of {size}, first difference at byte {mismatch}")
+    return received.read_bytes()
+
+
+def _first_difference(data: bytes, expected: bytes) -> int | None:
+    return next((index for index, (got, want) in enumerate(zip(data, expected, strict=False)) if got != want), None)
+
+
+def test_file_downlinked_byte_for_byte(fprime_test_api: Any) -> None:
+    """The bulk file of the RAM file system, filled with the kit's pattern,
+    reaches the ground through Svc.FileDownlink and fprime-gds's downlinker
+    with every byte as the pattern says (at least 2 KiB: the bulk file's
+    size is the board's, CONFIG_KIT_RAMFS_BULK_FILE_SIZE)."""
+    api = fprime_test_api
+    bulk, size = _bulk_file(api, FILL_SEED)
+    data = _downlinked(api, bulk, size, f"kit-bulk-{size}.bin")
+    mismatch = _first_difference(data, pattern(FILL_SEED, size))
+    assert len(data) == size and mismatch is None, f"{len(data)} B of {size}, first difference at byte {mismatch}"
+
+
+# The file uplink's test writes the bulk file with the pattern from another
+# seed than the fill's, so that what comes back can only be the uplink's
+UPLINK_SEED = 0x55504C4B
+# fprime-gds's uplinker waits for each packet's handshake; 16 KiB is 65
+# packets (its 256 B chunks) at the link's pace
+UPLINK_S = 60
+
+
+def _file_uplink(api: Any) -> None:
+    """Skips a test of the file uplink on a build whose board profile leaves
+    it out (CONFIG_KIT_SERVICE_FILE_UPLINK)."""
+    if "Kit.fileUplink.FilesReceived" not in api.dictionaries.channel_name:
+        pytest.skip("this board's profile leaves F´'s file uplink out for this model")
+
+
+def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> None:
+    """A file as large as the bulk file, uplinked through fprime-gds's
+    uplinker and Svc.FileUplink over the bulk file's earlier fill, comes
+    back through the file downlink with every byte as sent: the round trip
+    checks what the uplink wrote, not what the ground believes it sent."""
+    api = fprime_test_api
+    _file_uplink(api)
+    bulk, size = _bulk_file(api, FILL_SEED)
+    sent = pattern(UPLINK_SEED, size)
+    source = tmp_path / f"kit-up-{size}.bin"
+    source.write_bytes(sent)
+    api.uplink_file(str(source), bulk)
+    api.assert_event("Kit.fileUplink.FileReceived", timeout=UPLINK_S)
+    api.assert_event_count(0, "Kit.fileUplink.BadChecksum")
+    data = _downlinked(api, bulk, size, f"kit-roundtrip-{size}.bin")
+    mismatch = _first_difference(data, sent)
+    assert len(data) == size and mismatch is None, f"{len(data)} B of {size}, first difference at byte {mismatch}"

@@ -31,12 +31,12 @@ bool peekHeader(const Types::CircularBuffer& data, U32& startWord, U32& length) 
 
 Svc::FrameDetector::Status CountingFrameDetector::detect(const Types::CircularBuffer& data,
                                                          FwSizeType& size_out) const {
-    FW_ASSERT(m_capacity > HEADER_SIZE + TRAILER_SIZE, static_cast<FwAssertArgType>(m_capacity));
+    FW_ASSERT(m_largestFrame > HEADER_SIZE + TRAILER_SIZE, static_cast<FwAssertArgType>(m_largestFrame));
     const Svc::FprimeProtocol::FrameHeader expected;
     U32 startWord = 0;
     U32 length = 0;
     const bool header = peekHeader(data, startWord, length);
-    if (header && startWord == expected.get_startWord() && length > m_capacity - HEADER_SIZE - TRAILER_SIZE) {
+    if (header && startWord == expected.get_startWord() && length > m_largestFrame - HEADER_SIZE - TRAILER_SIZE) {
         // Never holdable: FrameAccumulator drops a byte on a size beyond its
         // ring. Decided here, not by F´'s detector (see the header).
         m_counts.oversized++;

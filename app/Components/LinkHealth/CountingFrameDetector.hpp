@@ -25,20 +25,31 @@ namespace Kit {
 //! deployment (found by the kit's uplink fuzzing, kittools/link/fuzz.py). Here
 //! such a frame is oversized, as any other too long for the accumulator:
 //! FrameAccumulator drops a byte and reports FrameDetectionSizeError.
+//!
+//! The same for a frame the ring holds but no link buffer does: the
+//! accumulator copies a whole frame into a buffer of the link's pool, and
+//! when none is that large it keeps the frame and tries again on the next
+//! bytes, forever (F´'s FrameAccumulator: NoBufferAvailable, then break):
+//! one valid frame too long for a buffer would close the uplink for good.
 class CountingFrameDetector final : public Svc::FrameDetector {
   public:
     struct Counts {
         U32 detected;        //!< frames found whole, checksum good (one retried for want of a buffer counts again)
         U32 badChecksums;    //!< start word and length fit, checksum failed
         U32 bytesDiscarded;  //!< positions where no frame starts
-        U32 oversized;       //!< length beyond what the accumulator holds
+        U32 oversized;       //!< length beyond what the accumulator or a link buffer holds
     };
 
-    CountingFrameDetector() : m_capacity(0), m_counts() {}
+    CountingFrameDetector() : m_capacity(0), m_largestFrame(0), m_counts() {}
 
-    //! \param capacity the accumulator's ring size: a frame longer than it
-    //!        can never be taken (FrameAccumulator then drops a byte)
-    void setCapacity(FwSizeType capacity) { m_capacity = capacity; }
+    //! \param capacity the accumulator's ring size
+    //! \param largestFrame the largest frame a link buffer holds (at most
+    //!        the ring's size): a longer one can never be taken, and
+    //!        FrameAccumulator is told it exceeds the ring (it drops a byte)
+    void setCapacity(FwSizeType capacity, FwSizeType largestFrame) {
+        m_capacity = capacity;
+        m_largestFrame = (largestFrame < capacity) ? largestFrame : capacity;
+    }
 
     Status detect(const Types::CircularBuffer& data, FwSizeType& size_out) const override;
 
@@ -47,6 +58,7 @@ class CountingFrameDetector final : public Svc::FrameDetector {
   private:
     Svc::FrameDetectors::FprimeFrameDetector m_fprime;
     FwSizeType m_capacity;
+    FwSizeType m_largestFrame;
     // detect() is const in F´'s interface; counting is not the detector's
     // state, only a record of its answers
     mutable Counts m_counts;

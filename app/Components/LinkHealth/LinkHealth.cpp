@@ -20,6 +20,7 @@ LinkHealth::LinkHealth(const char* const compName)
 LinkHealth::~LinkHealth() {}
 
 void LinkHealth::configure(FwSizeType accumulatorSize,
+                           FwSizeType largestFrame,
                            U32 commandsInFlight,
                            UartCountsSource uartCounts,
                            EventRoomSource eventRoom) {
@@ -27,7 +28,7 @@ void LinkHealth::configure(FwSizeType accumulatorSize,
     FW_ASSERT(uartCounts != nullptr);
     FW_ASSERT(eventRoom != nullptr);
     m_eventRoom = eventRoom;
-    m_detector.setCapacity(accumulatorSize);
+    m_detector.setCapacity(accumulatorSize, largestFrame);
     m_inFlightLimit = commandsInFlight;
     m_uartCounts = uartCounts;
 }

@@ -43,10 +43,12 @@ class LinkHealth final : public LinkHealthComponentBase {
     ~LinkHealth();
 
     //! \param accumulatorSize the FrameAccumulator's ring size
+    //! \param largestFrame the largest frame a link buffer holds
     //! \param commandsInFlight ground commands the dispatcher may hold at once
     //! \param uartCounts the link UART's receive counts
     //! \param eventRoom the event service's free queue slots
     void configure(FwSizeType accumulatorSize,
+                   FwSizeType largestFrame,
                    U32 commandsInFlight,
                    UartCountsSource uartCounts,
                    EventRoomSource eventRoom);

@@ -8,6 +8,9 @@
 # whichever the build chose.
 module Kit {
 
+  @ Health's entries up to the file downlink's: the next entry's index
+  constant pingEntriesToFiles = pingEntriesToParams + 1
+
   @ The file downlink
   topology FileServices {
 

@@ -4,6 +4,9 @@
 # with it.
 module Kit {
 
+  @ No entry for the file downlink: the next entry is where it would be
+  constant pingEntriesToFiles = pingEntriesToParams
+
   @ No file downlink
   topology FileServices {
 

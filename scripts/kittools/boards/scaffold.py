@@ -33,9 +33,9 @@ TODOS: dict[str, tuple[str, ...]] = {
         "Re-measure the stacks on this board from the 'KIT STACK' lines of a run of every",
         "scenario, with headroom: MAIN_STACK_SIZE per model, DYNAMIC_THREAD_STACK_SIZE (rtos).",
         "Stack protection (rtos): HW_STACK_PROTECTION where the part has an MPU, else STACK_SENTINEL.",
-        "F´ services a model leaves out (KIT_SERVICE_CDH, KIT_SERVICE_PARAMS, KIT_SERVICE_FILES) are the",
-        "reference board's RAM decisions, with its numbers: turn on what this board holds, and say why for",
-        "what stays off.",
+        "F´ services a model leaves out (KIT_SERVICE_CDH, KIT_SERVICE_PARAMS, KIT_SERVICE_FILES,",
+        "KIT_SERVICE_FILE_UPLINK) are the reference board's RAM decisions, with its numbers: turn on what",
+        "this board holds, and say why for what stays off.",
     ),
     # A board's Tables.fpp is an optional override of the deployment's table
     # (app/Top/Tables.fpp): this header only for a copied folder that has one

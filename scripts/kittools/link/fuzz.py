@@ -111,8 +111,8 @@ def invalid_frame(kind: str, rng: random.Random, deployment: Deployment) -> byte
         # own detector asserted on these (app/Components/LinkHealth)
         return HEADER.pack(START_WORD, rng.randint(0xFFFFFFF4, 0xFFFFFFFF)) + rng.randbytes(rng.randint(0, 16))
     if kind == "unknown_packet":
-        # Not a command, and not a file packet (3): the router drops those
-        # silently when, as here, there is no file uplink
+        # Not a command, and not a file packet (3: the file uplink's where the
+        # build has one, dropped silently by the router where it has not)
         descriptor = rng.choice([FW_PACKET_TELEM, FW_PACKET_LOG, rng.randint(4, 0xFFFF)])
         return frame(DESCRIPTOR.pack(descriptor) + rng.randbytes(rng.randint(0, 16)))
     if kind == "bad_opcode":

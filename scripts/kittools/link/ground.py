@@ -26,6 +26,7 @@ from pathlib import Path
 from kittools import variants
 from kittools.build.folder import BuildFolder
 from kittools.build.runner import Qemu, asks_at_boot, ends_run
+from kittools.link.client import line_rate
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
 
 BOOT_TIMEOUT_S = 60.0
@@ -195,6 +196,7 @@ class GroundStation:
         command = [
             "fprime-gds", "--no-app", "--dictionary", str(self.link.dictionary),
             "--communication-selection", "kit-unix", "--kit-socket", str(self.link.socket),
+            "--kit-baud", str(line_rate(link_line(self.qemu))),
             "--framing-selection", "fprime", *self.transport, "--logs", str(self.logs),
             "--gui", "html" if self.gui else "none", "--gui-port", str(self.gui_port),
             "--file-storage-directory", str(self.logs / "files"),

@@ -25,7 +25,7 @@ from kittools.workspace import KitError, environment
 FRAMEWORK = "F´ framework"
 SERVICES = "F´ services"
 HEALTH_VERSION = "F´ health and version (CdhCore's)"
-FILE_HANDLING = "F´ FileHandling (parameter database, file downlink, RAM file system)"
+FILE_HANDLING = "F´ FileHandling (parameter database, file downlink and uplink, RAM file system)"
 GROUND_LINK = "F´ ground link (ComFprime chain, UART driver)"
 OS_LAYER = "OS layer (fprime-baremetal / fprime-zephyr / kit)"
 INSTRUMENTS = "kit instruments (timing, probes, load, faults, record)"
@@ -54,11 +54,12 @@ _LINK_INSTANCES = ("comQueue", "framer", "comStub", "frameAccumulator", "deframe
 # kit's instruments: their components and their instances
 _HEALTH_VERSION_COMPONENTS = ("Health", "Version")
 _HEALTH_VERSION_INSTANCES = ("health", "version")
-_FILE_HANDLING_COMPONENTS = ("PrmDb", "FileDownlink")
-_FILE_HANDLING_INSTANCES = ("prmDb", "fileDownlink")
+_FILE_HANDLING_COMPONENTS = ("PrmDb", "FileDownlink", "FileUplink")
+_FILE_HANDLING_INSTANCES = ("prmDb", "fileDownlink", "fileUplink")
 _INSTRUMENT_COMPONENTS = ("Timing", "PingProbe", "LinkHealth", "Load", "Faults", "Uplink", "Downlink")
 _INSTRUMENT_INSTANCES = ("timing", "load", "faults", "uplink", "downlink", "eventsPing", "tlmSendPing", "cmdDispPing",
-                         "rg1kHzPing", "rg100HzPing", "rg10HzPing", "prmDbPing", "fileDownlinkPing")
+                         "rg1kHzPing", "rg100HzPing", "rg10HzPing", "prmDbPing", "fileDownlinkPing",
+                         "fileUplinkPing")
 
 
 def _instance_symbols(names: tuple[str, ...]) -> frozenset[str]:

@@ -32,6 +32,11 @@ TEST(LinkHealth, ALengthThatWrapsTheFrameSizeIsOversized) {
     tester.aLengthThatWrapsTheFrameSizeIsOversized();
 }
 
+TEST(LinkHealth, AFrameNoBufferHoldsIsOversized) {
+    Kit::LinkHealthTester tester;
+    tester.aFrameNoBufferHoldsIsOversized();
+}
+
 TEST(LinkHealth, ACommandWithoutRoomForItsEventsIsDropped) {
     Kit::LinkHealthTester tester;
     tester.aCommandWithoutRoomForItsEventsIsDropped();

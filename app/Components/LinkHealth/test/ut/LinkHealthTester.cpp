@@ -64,7 +64,7 @@ LinkHealthTester::LinkHealthTester()
     this->connectPorts();
     s_uartCounts = {};
     s_eventRoom = EVENT_QUEUE_DEPTH;
-    this->component.configure(ACCUMULATOR_SIZE, IN_FLIGHT, uartCounts, eventRoom);
+    this->component.configure(ACCUMULATOR_SIZE, LARGEST_FRAME, IN_FLIGHT, uartCounts, eventRoom);
 }
 
 LinkHealthTester::~LinkHealthTester() {}
@@ -182,6 +182,24 @@ void LinkHealthTester::detectorCountsEveryOutcomeByReason() {
     ASSERT_TLM_BadChecksums(0, 1);
     ASSERT_TLM_BytesDiscarded(0, 1);
     ASSERT_TLM_Oversized(0, 1);
+}
+
+void LinkHealthTester::aFrameNoBufferHoldsIsOversized() {
+    // The ring would hold it, but FrameAccumulator could never get a buffer
+    // for it and would keep it at the front of the ring for good
+    const CountingFrameDetector& detector = static_cast<const CountingFrameDetector&>(this->component.detector());
+    const U32 largestPayload = static_cast<U32>(LARGEST_FRAME - HEADER_SIZE - TRAILER_SIZE);
+    U8 frame[FRAME_SIZE];
+    FwSizeType size = 0;
+    fprimeFrame(frame, largestPayload + 1);
+    EXPECT_EQ(detectIn(detector, frame, FRAME_SIZE, size), Svc::FrameDetector::Status::MORE_DATA_NEEDED);
+    EXPECT_GT(size, static_cast<FwSizeType>(ACCUMULATOR_SIZE));  // FrameAccumulator drops a byte on that
+    EXPECT_EQ(this->component.counts().oversized, 1u);
+    // The largest a buffer holds is awaited whole, not refused
+    fprimeFrame(frame, largestPayload);
+    EXPECT_EQ(detectIn(detector, frame, FRAME_SIZE, size), Svc::FrameDetector::Status::MORE_DATA_NEEDED);
+    EXPECT_EQ(size, static_cast<FwSizeType>(LARGEST_FRAME));
+    EXPECT_EQ(this->component.counts().oversized, 1u);
 }
 
 void LinkHealthTester::aLengthThatWrapsTheFrameSizeIsOversized() {

@@ -14,6 +14,8 @@ class LinkHealthTester : public LinkHealthGTestBase {
     static const FwEnumStoreType TEST_INSTANCE_ID = 0;
     static constexpr U32 IN_FLIGHT = 2;
     static constexpr FwSizeType ACCUMULATOR_SIZE = 64;
+    //! The link buffers' size: smaller than the ring, as the kit's are
+    static constexpr FwSizeType LARGEST_FRAME = 48;
     //! The event service's queue, empty (app/Top/instances.fpp's is 12)
     static constexpr FwSizeType EVENT_QUEUE_DEPTH = 12;
 
@@ -26,6 +28,7 @@ class LinkHealthTester : public LinkHealthGTestBase {
     void uartCountsBecomeTelemetry();
     void detectorCountsEveryOutcomeByReason();
     void aLengthThatWrapsTheFrameSizeIsOversized();
+    void aFrameNoBufferHoldsIsOversized();
     void aCommandWithoutRoomForItsEventsIsDropped();
 
   private:
