@@ -35,6 +35,9 @@ constexpr FwSizeType ACTIVE_STACKS[] = {
 #if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
     Stacks::fileUplink,  // the file uplink (app/Top/services/)
 #endif
+#if defined(CONFIG_KIT_SERVICE_SEQUENCER)
+    Stacks::cmdSeq,  // the sequencer (app/Top/services/)
+#endif
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
 

@@ -43,6 +43,9 @@ const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT] = {
 #if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
     {"fileUplink", &fileUplink, sizeof(fileUplink), &fileUplink},
 #endif
+#if defined(CONFIG_KIT_SERVICE_SEQUENCER)
+    {"cmdSeq", &cmdSeq, sizeof(cmdSeq), &cmdSeq},
+#endif
 };
 
 #if defined(CONFIG_KIT_SERVICE_CDH)
@@ -72,6 +75,9 @@ const PingEntry PING_ENTRIES[PING_ENTRY_COUNT] = {
 #endif
 #if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
     {"fileUplink", &fileUplinkPing},
+#endif
+#if defined(CONFIG_KIT_SERVICE_SEQUENCER)
+    {"cmdSeq", &cmdSeqPing},
 #endif
 };
 }  // namespace
@@ -179,7 +185,8 @@ FwSizeType s_linkBufferBytes = 0;
 void configureLink(Fw::MemAllocator& allocator) {
     // A file packet's frame is the largest the ground sends, where the
     // build takes file packets at all
-    const FwSizeType largestFrame = (FILE_UPLINKS > 0) ? Link::fileFrameSize : Link::bufferSize;
+    const FwSizeType largestFrame =
+        (FILE_UPLINKS > 0) ? static_cast<FwSizeType>(Link::fileFrameSize) : static_cast<FwSizeType>(Link::bufferSize);
     Svc::BufferManager::BufferBins bins = {};
     bins.bins[0].bufferSize = largestFrame;
     bins.bins[0].numBuffers = Link::bufferCount;

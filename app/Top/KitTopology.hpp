@@ -50,8 +50,13 @@ constexpr FwSizeType FILE_UPLINKS = 1;
 #else
 constexpr FwSizeType FILE_UPLINKS = 0;
 #endif
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT =
-    4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + PARAMETER_DATABASES + FILE_DOWNLINKS + FILE_UPLINKS;
+#if defined(CONFIG_KIT_SERVICE_SEQUENCER)
+constexpr FwSizeType SEQUENCERS = 1;
+#else
+constexpr FwSizeType SEQUENCERS = 0;
+#endif
+constexpr FwSizeType SERVICES = PARAMETER_DATABASES + FILE_DOWNLINKS + FILE_UPLINKS + SEQUENCERS;
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS + SERVICES;
 extern const ActiveInstance ACTIVE_INSTANCES[ACTIVE_INSTANCE_COUNT];
 
 //! Name of the active instance whose object holds `address`, or nullptr
@@ -70,16 +75,15 @@ QueueUse queueUse(const ActiveInstance& instance);
 //! Svc.Health's ping entries: events, tlmSend, the dispatcher where it is
 //! active, the rate groups where the model pings them
 //! (CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS), then the parameter database, the
-//! file downlink and the file uplink where the build has them. Entry i is
-//! health's port i.
+//! file downlink, the file uplink and the sequencer where the build has
+//! them. Entry i is health's port i.
 #if defined(CONFIG_KIT_SERVICE_CDH)
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
 constexpr FwSizeType PINGED_RATE_GROUPS = 3;
 #else
 constexpr FwSizeType PINGED_RATE_GROUPS = 0;
 #endif
-constexpr FwIndexType PING_ENTRY_COUNT =
-    2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + PARAMETER_DATABASES + FILE_DOWNLINKS + FILE_UPLINKS;
+constexpr FwIndexType PING_ENTRY_COUNT = 2 + ACTIVE_DISPATCHERS + PINGED_RATE_GROUPS + SERVICES;
 //! Name of ping entry `entry`
 const char* pingEntryName(FwIndexType entry);
 //! The probe timing ping entry `entry`'s round trips

@@ -49,6 +49,9 @@ enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 namespace Kit_fileUplinkPing {
 enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 }
+namespace Kit_cmdSeqPing {
+enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
+}
 }  // namespace PingEntries
 
 namespace Kit {

@@ -38,6 +38,7 @@ module Kit {
     constant prmDb = 2
     constant fileDownlink = 2
     constant fileUplink = 2
+    constant cmdSeq = 2
     constant load = 1
   }
 
@@ -60,6 +61,7 @@ module Kit {
     constant prmDb = 2048
     constant fileDownlink = 2048
     constant fileUplink = 2048
+    constant cmdSeq = 2048
   }
 
 }

@@ -49,6 +49,15 @@ module Kit {
     @ of the pool and health's ping, and never fills (F´ asserts on a
     @ full queue; checked in app/src/TopologyChecks.cpp)
     constant fileUplink = Link.bufferCount + 1
+    @ The sequencer: its 10 Hz clock, a command's answer, a CS_ command
+    @ and health's ping, with one spare
+    constant cmdSeq = 5
+  }
+
+  @ The command sequencer's settings
+  module Sequences {
+    @ A command of a sequence not answered in this long fails the sequence
+    constant commandTimeoutS = 5
   }
 
   @ The RAM file system (fprime-baremetal's MicroFs, app/src/RamFs.cpp)
@@ -59,7 +68,8 @@ module Kit {
     @ The parameter database's file (in the dictionary: the ground names
     @ it in PRM_LOAD_FILE)
     dictionary constant parameterFile = "/bin0/file0"
-    @ A file a ground test may write and load (PRM_LOAD_FILE)
+    @ A file a ground test may write and load (PRM_LOAD_FILE), and where
+    @ the ground uplinks a sequence for the sequencer (CS_RUN)
     dictionary constant scratchFile = "/bin0/file1"
     @ The file the file downlink's test fills (Load.FILL_FILE) and sends,
     @ and the file uplink's test writes
@@ -189,6 +199,7 @@ module Kit {
   instance prmDbPing: Kit.PingProbe base id 0x2B60
   instance fileDownlinkPing: Kit.PingProbe base id 0x2B70
   instance fileUplinkPing: Kit.PingProbe base id 0x2B80
+  instance cmdSeqPing: Kit.PingProbe base id 0x2B90
 
   @ Where there is no parameter database: every parameter keeps its default
   instance paramDefaults: Kit.ParamDefaults base id 0x2D00
@@ -230,6 +241,31 @@ module Kit {
     queue size Queues.fileUplink \
     stack size Stacks.fileUplink \
     priority Priorities.fileUplink
+
+  @ F´'s command sequencer (the Ref deployment's cmdSeq): a sequence file of
+  @ the RAM file system, its commands to the dispatcher on their own port;
+  @ its buffer holds a sequence the size of a RAM file system file
+  instance cmdSeq: Svc.CmdSequencer base id 0x3000 \
+    queue size Queues.cmdSeq \
+    stack size Stacks.cmdSeq \
+    priority Priorities.cmdSeq \
+  {
+    # The F´ allocator's memory ID of its buffer (the link's is 0, the
+    # telemetry store's 2, the passive dispatcher's 3: KitTopology.cpp)
+    phase Fpp.ToCpp.Phases.configConstants """
+    enum {
+        SEQUENCE_BUFFER_ID = 4
+    };
+    """
+    phase Fpp.ToCpp.Phases.configComponents """
+    Kit::cmdSeq.allocateBuffer(ConfigConstants::Kit_cmdSeq::SEQUENCE_BUFFER_ID, state.allocator,
+                               CONFIG_KIT_RAMFS_FILE_SIZE);
+    Kit::cmdSeq.setTimeout(Sequences::commandTimeoutS);
+    """
+    phase Fpp.ToCpp.Phases.tearDownComponents """
+    Kit::cmdSeq.deallocateBuffer(state.allocator);
+    """
+  }
 
   instance rateGroupDriver: Svc.RateGroupDriver base id 0x0400
 

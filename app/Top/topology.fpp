@@ -56,6 +56,10 @@ module Kit {
     # (app/Top/services/)
     import FileUplinkServices
 
+    # F´'s command sequencer, its sequences on the RAM file system, with its
+    # ping (app/Top/services/)
+    import SequencerServices
+
     command connections instance cmdDisp
     event connections instance events
     telemetry connections instance tlmSend
@@ -92,7 +96,8 @@ module Kit {
       rg10Hz.RateGroupMemberOut[8] -> linkHealth.schedIn
       # [9]: health's 10 Hz run, where the build has it (app/Top/services/)
       # [10]: the file downlink's 10 Hz run, where the build has it (app/Top/services/)
-      rg10Hz.RateGroupMemberOut[11] -> timing.cycleEnd[2]
+      # [11]: the sequencer's 10 Hz clock, where the build has it (app/Top/services/)
+      rg10Hz.RateGroupMemberOut[12] -> timing.cycleEnd[2]
     }
 
     # The background load's burst goes through its own queue

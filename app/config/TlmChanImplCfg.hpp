@@ -26,7 +26,12 @@ enum {
 #else
     FILE_CHANNELS = 0,
 #endif
-    SERVICE_CHANNELS = CDH_CHANNELS + FILE_CHANNELS,
+#if defined(CONFIG_KIT_SERVICE_SEQUENCER)
+    SEQUENCER_CHANNELS = 5,  //!< Svc.CmdSequencer's (app/Top/services/)
+#else
+    SEQUENCER_CHANNELS = 0,
+#endif
+    SERVICE_CHANNELS = CDH_CHANNELS + FILE_CHANNELS + SEQUENCER_CHANNELS,
 };
 enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table

@@ -73,6 +73,9 @@ def test_each_subtopology_and_the_instruments_are_layers_of_their_own():
     assert by_layer.classify(micro_fs, "WORKSPACE") == files
     assert by_layer.classify("deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/File.cpp/f", "WORKSPACE") == files
     assert by_layer.classify("app/src/RamFs.cpp/s_region", "WORKSPACE") == files
+    # the command sequencer: its code and its instance
+    assert by_layer.classify("deps/fprime/Svc/CmdSequencer/CmdSequencerImpl.cpp/f", "WORKSPACE") == by_layer.SEQUENCER
+    assert by_layer.classify(":/_ZN3Kit6cmdSeqE") == by_layer.SEQUENCER
     # ... not fprime-baremetal's task
     task = "deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/Task.cpp/f"
     assert by_layer.classify(task, "WORKSPACE") == by_layer.OS_LAYER

@@ -319,3 +319,78 @@ def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> No
     data = _downlinked(api, bulk, size, f"kit-roundtrip-{size}.bin")
     mismatch = _first_difference(data, sent)
     assert len(data) == size and mismatch is None, f"{len(data)} B of {size}, first difference at byte {mismatch}"
+
+
+# A sequence as an operator writes one (fprime-gds's .seq text, compiled by
+# its fprime-seqgen against the build's dictionary): two commands at once,
+# the third a second after the second
+SEQUENCE_SETPOINT = 1234
+SEQUENCE_TEXT = f"""; The kit's ground test sequence
+R00:00:00 Kit.cmdDisp.CMD_NO_OP
+R00:00:00 Kit.controller.SET_SETPOINT {SEQUENCE_SETPOINT}
+R00:00:01 Kit.cmdDisp.CMD_NO_OP_STRING "sequence"
+"""
+SEQUENCE_GAP_S = 1.0
+# The sequencer's clock is the 10 Hz group: a timed record starts within a tick
+SEQUENCE_TICK_S = 0.1
+# CS_RUN with BLOCK answers when the sequence has run
+SEQUENCE_S = 10
+# fprime-seqgen's time base for a sequence that runs on any clock (TB_DONT_CARE)
+ANY_TIME_BASE = 0xFFFF
+
+
+def _sequence(api: Any, tmp_path: Path) -> tuple[str, bytes]:
+    """The ground test sequence compiled from its text with fprime-gds's
+    sequence generator; skips a test of the sequencer on a build whose
+    board profile leaves it out (CONFIG_KIT_SERVICE_SEQUENCER)."""
+    if "Kit.cmdSeq.CS_RUN" not in api.dictionaries.command_name:
+        pytest.skip("this board's profile leaves F´'s command sequencer out for this model")
+    from fprime_gds.common.tools.seqgen import generateSequence
+
+    text = tmp_path / "kit.seq"
+    text.write_text(SEQUENCE_TEXT)
+    binary = tmp_path / "kit.bin"
+    generateSequence(str(text), str(binary), str(api.dictionaries.dictionary_path), ANY_TIME_BASE)
+    return str(api.dictionaries.constant_name["Kit.RamFs.scratchFile"]), binary.read_bytes()
+
+
+def _uplink(api: Any, tmp_path: Path, name: str, data: bytes, destination: str) -> None:
+    source = tmp_path / name
+    source.write_bytes(data)
+    api.uplink_file(str(source), destination)
+    api.assert_event("Kit.fileUplink.FileReceived", timeout=UPLINK_S)
+
+
+def test_sequence_uplinked_and_run(fprime_test_api: Any, tmp_path: Path) -> None:
+    """A sequence made with fprime-seqgen, uplinked to the RAM file system
+    and run (CS_RUN): its commands reach the dispatcher from the sequencer,
+    each answered, the timed one a second after the one before it in the
+    deployment's time."""
+    api = fprime_test_api
+    destination, sequence = _sequence(api, tmp_path)
+    _uplink(api, tmp_path, "kit.bin", sequence, destination)
+    start = api.get_event_test_history().size()
+    api.send_and_assert_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"], max_delay=SEQUENCE_S)
+    api.assert_event("Kit.cmdSeq.CS_SequenceComplete", start=start, timeout=TIMEOUT_S)
+    noop = api.assert_event("Kit.cmdDisp.NoOpReceived", start=start, timeout=TIMEOUT_S)
+    api.assert_event("Kit.controller.SetpointChanged", [SEQUENCE_SETPOINT], start=start, timeout=TIMEOUT_S)
+    timed = api.assert_event("Kit.cmdDisp.NoOpStringReceived", ["sequence"], start=start, timeout=TIMEOUT_S)
+    gap = timed.get_time().get_float() - noop.get_time().get_float()
+    assert SEQUENCE_GAP_S <= gap <= SEQUENCE_GAP_S + 3 * SEQUENCE_TICK_S, f"the timed record ran {gap:.3f} s later"
+    api.assert_event_count(0, "Kit.cmdSeq.CS_CommandError", start=start)
+
+
+def test_sequence_with_a_bad_crc_refused(fprime_test_api: Any, tmp_path: Path) -> None:
+    """A sequence whose CRC does not match its records is refused before any
+    of them runs (CS_FileCrcFailure, the CS_RUN command fails), and the
+    deployment goes on."""
+    api = fprime_test_api
+    destination, sequence = _sequence(api, tmp_path)
+    damaged = bytearray(sequence)
+    damaged[-1] ^= 0x01
+    _uplink(api, tmp_path, "kit-bad-crc.bin", bytes(damaged), destination)
+    start = api.get_event_test_history().size()
+    api.send_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"])
+    api.assert_event("Kit.cmdSeq.CS_FileCrcFailure", start=start, timeout=TIMEOUT_S)
+    api.assert_event_count(0, "Kit.cmdDisp.NoOpReceived", start=start)
+    api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)

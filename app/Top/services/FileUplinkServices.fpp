@@ -8,6 +8,9 @@
 # app/Top/topology.fpp imports whichever the build chose.
 module Kit {
 
+  @ Health's entries up to the file uplink's: the next entry's index
+  constant pingEntriesToUplink = pingEntriesToFiles + 1
+
   @ The file uplink
   topology FileUplinkServices {
 

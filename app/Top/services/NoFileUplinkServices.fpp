@@ -5,6 +5,9 @@
 # FileUplinkServices.fpp beside it is the build with it.
 module Kit {
 
+  @ No entry for the file uplink: the next entry is where it would be
+  constant pingEntriesToUplink = pingEntriesToFiles
+
   @ No file uplink
   topology FileUplinkServices {
 

@@ -19,6 +19,7 @@ _LEVERS = {
            "about 8 KiB), its parameter database (CONFIG_KIT_SERVICE_PARAMS=n, 4 to 6 KiB with its thread), "
            "its file downlink (CONFIG_KIT_SERVICE_FILES=n, 5.6 KiB with a 2 KiB file), "
            "its file uplink (CONFIG_KIT_SERVICE_FILE_UPLINK=n, about 2 KiB), "
+           "its command sequencer (CONFIG_KIT_SERVICE_SEQUENCER=n, about 4 KiB with its heap), "
            "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE (app/Kconfig), the queue depths "
            "(app/Top/instances.fpp), the stack table (Tables.fpp), F´'s configuration (app/config/)",
 }

@@ -34,8 +34,8 @@ TODOS: dict[str, tuple[str, ...]] = {
         "scenario, with headroom: MAIN_STACK_SIZE per model, DYNAMIC_THREAD_STACK_SIZE (rtos).",
         "Stack protection (rtos): HW_STACK_PROTECTION where the part has an MPU, else STACK_SENTINEL.",
         "F´ services a model leaves out (KIT_SERVICE_CDH, KIT_SERVICE_PARAMS, KIT_SERVICE_FILES,",
-        "KIT_SERVICE_FILE_UPLINK) are the reference board's RAM decisions, with its numbers: turn on what",
-        "this board holds, and say why for what stays off.",
+        "KIT_SERVICE_FILE_UPLINK, KIT_SERVICE_SEQUENCER) are the reference board's RAM decisions, with its",
+        "numbers: turn on what this board holds, and say why for what stays off.",
     ),
     # A board's Tables.fpp is an optional override of the deployment's table
     # (app/Top/Tables.fpp): this header only for a copied folder that has one

@@ -218,9 +218,9 @@ def answered(link: Downlink, noops: int) -> bool:
 # The longest invalid frame of any kind (garbage; the framed kinds are at
 # most 32 bytes)
 INVALID_FRAME_MAX = 48
-# fprime-zephyr's ZephyrUartDriver receive ring (RING_BUF_SIZE), drained
-# 64 bytes per 100 Hz call: a batch lands in it whole, so the worst batch
-# must fit, or the NO_OP closing it could be dropped
+# fprime-zephyr's ZephyrUartDriver receive ring (RING_BUF_SIZE), drained at
+# each 100 Hz call: a batch lands in it whole, so the worst batch must fit,
+# or the NO_OP closing it could be dropped
 UART_RING_BYTES = 1024
 # Invalid frames per batch: at most 4 x 48 + NO_OP + padding = 292 bytes.
 # 12 a batch cut the reference board's 10,000 frames from 34 to 21 s, but a

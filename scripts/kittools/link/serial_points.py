@@ -27,9 +27,10 @@ class Axis:
 
 
 # The uplink's levels below a full line (that level, full_line_commands(),
-# depends on the line rate). fprime-zephyr's UART driver takes at most 64
-# bytes per 100 Hz poll, 355 NO_OP frames (18 B) a second: above that its
-# receive ring overflows, counted (LinkHealth.UartRingDrops). The downlink's
+# depends on the line rate). fprime-zephyr's UART driver takes what its
+# 1 KiB receive ring holds at each 100 Hz poll (the kit's patch 0003: it took
+# 64 bytes, 355 NO_OP frames of 18 B a second, below a full line); what the
+# ring cannot hold is counted (LinkHealth.UartRingDrops). The downlink's
 # ceiling is the load's: at most Load.DOWNLINK_MAX (16) packets per 100 Hz
 # slice. Noise: percent of the line rate.
 UPLINK = Axis("uplink", 0, "cmd/s", (0, 50, 100, 200, 300))
@@ -48,8 +49,8 @@ SETTLE_S = 0.3
 # one in every repeat: that level is the noise axis' delivery breaking point
 NOISE_NOOP_RATE = 40
 # The uplink's pause before a segment request: the UART driver's receive
-# ring (1,024 bytes, drained 64 per 100 Hz poll) empties in 160 ms, so the
-# request is not lost behind a full ring
+# ring (1,024 bytes, drained at each 100 Hz poll) empties well within it, so
+# the request is not lost behind a full ring
 REQUEST_QUIET_S = 0.2
 # Seed of the noise (each point its own stream from it)
 NOISE_SEED = 20261203

@@ -26,6 +26,7 @@ FRAMEWORK = "F´ framework"
 SERVICES = "F´ services"
 HEALTH_VERSION = "F´ health and version (CdhCore's)"
 FILE_HANDLING = "F´ FileHandling (parameter database, file downlink and uplink, RAM file system)"
+SEQUENCER = "F´ command sequencer"
 GROUND_LINK = "F´ ground link (ComFprime chain, UART driver)"
 OS_LAYER = "OS layer (fprime-baremetal / fprime-zephyr / kit)"
 INSTRUMENTS = "kit instruments (timing, probes, load, faults, record)"
@@ -35,10 +36,10 @@ LIBC = "libc (picolibc, libgcc)"
 LIBSTDCXX = "libstdc++"
 UNATTRIBUTED = "unattributed"
 #: The layers, F´'s subtopologies among them (CdhCore's health and version,
-#: FileHandling, the ComFprime chain) and the kit's instruments apart from
-#: the deployment they measure
-CATEGORIES = (FRAMEWORK, SERVICES, HEALTH_VERSION, FILE_HANDLING, GROUND_LINK, OS_LAYER, INSTRUMENTS, KIT, ZEPHYR,
-              LIBC, LIBSTDCXX, UNATTRIBUTED)
+#: FileHandling, the sequencer, the ComFprime chain) and the kit's
+#: instruments apart from the deployment they measure
+CATEGORIES = (FRAMEWORK, SERVICES, HEALTH_VERSION, FILE_HANDLING, SEQUENCER, GROUND_LINK, OS_LAYER, INSTRUMENTS, KIT,
+              ZEPHYR, LIBC, LIBSTDCXX, UNATTRIBUTED)
 
 # The components of the ground link (app/Top/instances.fpp): F´'s ComFprime
 # chain and fprime-zephyr's UART driver, by folder and by class name
@@ -56,10 +57,12 @@ _HEALTH_VERSION_COMPONENTS = ("Health", "Version")
 _HEALTH_VERSION_INSTANCES = ("health", "version")
 _FILE_HANDLING_COMPONENTS = ("PrmDb", "FileDownlink", "FileUplink")
 _FILE_HANDLING_INSTANCES = ("prmDb", "fileDownlink", "fileUplink")
+_SEQUENCER_COMPONENTS = ("CmdSequencer",)
+_SEQUENCER_INSTANCES = ("cmdSeq",)
 _INSTRUMENT_COMPONENTS = ("Timing", "PingProbe", "LinkHealth", "Load", "Faults", "Uplink", "Downlink")
 _INSTRUMENT_INSTANCES = ("timing", "load", "faults", "uplink", "downlink", "eventsPing", "tlmSendPing", "cmdDispPing",
                          "rg1kHzPing", "rg100HzPing", "rg10HzPing", "prmDbPing", "fileDownlinkPing",
-                         "fileUplinkPing")
+                         "fileUplinkPing", "cmdSeqPing")
 
 
 def _instance_symbols(names: tuple[str, ...]) -> frozenset[str]:
@@ -72,6 +75,7 @@ _INSTANCE_LAYERS = (
     (_LINK_INSTANCE_SYMBOLS, GROUND_LINK),
     (_instance_symbols(_HEALTH_VERSION_INSTANCES), HEALTH_VERSION),
     (_instance_symbols(_FILE_HANDLING_INSTANCES), FILE_HANDLING),
+    (_instance_symbols(_SEQUENCER_INSTANCES), SEQUENCER),
     (_instance_symbols(_INSTRUMENT_INSTANCES), INSTRUMENTS),
 )
 # F´ classes by mangled name (length-prefixed: 6Health is not 10LinkHealth)
@@ -79,6 +83,7 @@ _SVC_CLASS_LAYERS = (
     (_LINK_COMPONENTS, GROUND_LINK),
     (_HEALTH_VERSION_COMPONENTS, HEALTH_VERSION),
     (_FILE_HANDLING_COMPONENTS, FILE_HANDLING),
+    (_SEQUENCER_COMPONENTS, SEQUENCER),
 )
 
 _BY_PATH = (
@@ -87,6 +92,7 @@ _BY_PATH = (
     ("/Drv/ZephyrUartDriver/", GROUND_LINK),
     *((f"/Svc/{name}/", HEALTH_VERSION) for name in _HEALTH_VERSION_COMPONENTS),
     *((f"/Svc/{name}/", FILE_HANDLING) for name in _FILE_HANDLING_COMPONENTS),
+    *((f"/Svc/{name}/", SEQUENCER) for name in _SEQUENCER_COMPONENTS),
     # fprime-baremetal's MicroFs, F´'s file system in every model, and the
     # kit's mount of it
     ("/Os/Baremetal/MicroFs/", FILE_HANDLING),
