@@ -32,12 +32,18 @@ module Kit {
     constant rg100Hz = 11
     constant rg10Hz = 10
     constant cmdDisp = 6
+    @ The file uplink holds a link buffer for each packet it has not
+    @ written: at the services' level (2) on mps2/an385 rtos, the events
+    @ and telemetry it caused kept it from running, and the router ran out
+    @ of buffers for the next packets (141 AllocationError events in a
+    @ file-packet fuzzing run); beside the dispatcher, the link's other
+    @ consumer, it gives them back within the pass
+    constant fileUplink = 6
     constant comQueue = 5
     constant tlmSend = 4
     constant events = 3
     constant prmDb = 2
     constant fileDownlink = 2
-    constant fileUplink = 2
     constant cmdSeq = 2
     constant load = 1
   }

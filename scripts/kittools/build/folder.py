@@ -10,11 +10,12 @@ or F´ upgrade) is followed here once.
 
 from __future__ import annotations
 
+import hashlib
 import json
 import re
 from pathlib import Path
 
-from kittools.workspace import KitError
+from kittools.workspace import KIT_ROOT, KitError
 
 #: The image Zephyr links, relative to the build folder
 ELF = "zephyr/zephyr.elf"
@@ -30,6 +31,23 @@ DICTIONARIES = "build-artifacts/**/dict/*TopologyDictionary.json"
 FPP_CONSTANTS = "F-Prime/default/config/FppConstantsAc.hpp"
 #: Where twister's QEMU handler keeps a build's console
 CONSOLE_LOG = "handler.log"
+
+#: The kit's Kconfig files: the models', the deployment's, the boards' defaults, the modules'
+KIT_KCONFIG_FILES = ("app/**/Kconfig*", "*/Kconfig.model", "boards/**/Kconfig*", "modules/**/Kconfig*")
+#: Beside a build the kit configures itself: the digest of the Kconfig files it was configured from
+KCONFIG_STAMP = "kit-kconfig.sha256"
+
+
+def kit_kconfig_digest(root: Path = KIT_ROOT) -> str:
+    """The kit's Kconfig files, as one digest. Ninja configures a build
+    again when one changes, but Zephyr then takes the build's last .config
+    as input, which keeps every prompted symbol's old value: a changed
+    default reaches a build only configured from its fragments again."""
+    digest = hashlib.sha256()
+    for kconfig in sorted({path for pattern in KIT_KCONFIG_FILES for path in root.glob(pattern) if path.is_file()}):
+        digest.update(f"{kconfig.relative_to(root)}\0".encode() + kconfig.read_bytes() + b"\0")
+    return digest.hexdigest()
+
 
 #: The F´ switches of modules/fprime/Kconfig start with this
 FPRIME_SWITCH = "CONFIG_FPRIME_"
@@ -70,6 +88,18 @@ class BuildFolder:
         """The build folders under `root` (at any depth) that CMake
         configured, linked or not."""
         return [BuildFolder(cache.parent) for cache in root.glob(f"**/{CMAKE_CACHE}")]
+
+    def take_kconfig_defaults(self, digest: str) -> None:
+        """Before a build the kit configures itself: drop its .config when
+        the kit's Kconfig files changed since (or it has no stamp), so that
+        Zephyr configures it from its fragments and today's defaults
+        (kit_kconfig_digest says why); mark_kconfig(digest) after it built."""
+        stamp = self.path / KCONFIG_STAMP
+        if not stamp.is_file() or stamp.read_text().strip() != digest:
+            self.config.unlink(missing_ok=True)
+
+    def mark_kconfig(self, digest: str) -> None:
+        (self.path / KCONFIG_STAMP).write_text(digest + "\n")
 
     # --- Paths ----------------------------------------------------------
 

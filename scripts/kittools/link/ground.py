@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from kittools import variants
-from kittools.build.folder import BuildFolder
+from kittools.build.folder import BuildFolder, kit_kconfig_digest
 from kittools.build.runner import Qemu, asks_at_boot, ends_run
 from kittools.link.client import line_rate
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
@@ -245,6 +245,11 @@ def build_ground(board: str, variant: str, log: Path) -> Path:
     """Build (or bring up to date) the ground scenario of a board and variant
     (app/variants.yaml) with west, as a user would; returns the build folder."""
     build_dir = ground_build_dir(board, variant)
+    # A folder built before the kit's Kconfig defaults changed keeps its old
+    # values (a heap arena too small for a new service faulted at boot)
+    folder = BuildFolder(build_dir)
+    kconfig = kit_kconfig_digest()
+    folder.take_kconfig_defaults(kconfig)
     command = ["west", "build", "-b", board, "-d", str(build_dir), str(KIT_ROOT / "app"), "--",
                *variants.get(variant).cmake_args(), "-DCONFIG_KIT_SCENARIO_GROUND=y"]
     log.parent.mkdir(parents=True, exist_ok=True)
@@ -254,6 +259,7 @@ def build_ground(board: str, variant: str, log: Path) -> Path:
     if code != 0:
         tail = "\n".join(log.read_text(errors="replace").splitlines()[-25:])
         raise KitError(f"building {board} {variant} failed ({' '.join(command)}); log {log}:\n{tail}")
+    folder.mark_kconfig(kconfig)
     return build_dir
 
 

@@ -15,7 +15,7 @@ from typing import Any, Protocol, TypeVar
 from kittools import sweep
 from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.build import runner
-from kittools.link import flood, fuzz, ground, serial_sweep
+from kittools.link import file_fuzz, flood, fuzz, ground, serial_sweep
 from kittools.log import LOG, say
 from kittools.suite import platforms, results
 from kittools.suite.counts import Tally, junit_tally, run_logged
@@ -117,12 +117,13 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
 def raw_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
     """One build's checks on the raw link, paced by the deployment's own
     answers and clock, one after the other (they share its QEMU pipe and
-    link socket): another build's dictionary refused, uplink fuzzing, the
-    flood, and on SERIAL_SWEEP_BOARD the serial-load sweep."""
+    link socket): another build's dictionary refused, uplink fuzzing of
+    frames and of file packets, the flood, and on SERIAL_SWEEP_BOARD the
+    serial-load sweep."""
     name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
     tally = foreign_dictionary_build(build, name, logs)
-    checks = [fuzz_build, flood_build]
+    checks = [fuzz_build, file_fuzz_build, flood_build]
     if check_board(platform) == check_board(SERIAL_SWEEP_BOARD):
         checks.append(serial_sweep_build)
     for check in checks:
@@ -232,6 +233,43 @@ def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
         f"{dict(sorted(outcome.sent.items()))}, {outcome.noops_answered}/{outcome.noops_sent} NO_OPs answered, "
         f"rejected {record['rejected']} ({time.monotonic() - started:.0f} s): "
         f"{'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}")
+    return Tally(failed=1) if failures else Tally(passed=1)
+
+
+# File-uplink fuzzing: the same seed; packets FileUplink must refuse, per
+# model on every board that has the file uplink (issue 32: at least 2,500)
+FILE_FUZZ_INVALID_PACKETS = 2_500
+
+
+def file_fuzz_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and fuzz its file uplink (kittools.link.file_fuzz);
+    the outcome goes to file-fuzz.json beside the other logs. A build whose
+    board profile leaves the file uplink out is skipped, and said to be."""
+    link = ground.link_of(build)
+    if not file_fuzz.has_file_uplink(link.dictionary):
+        say(f"  {name}: file-uplink fuzzing: skipped (this board's profile leaves F´'s file uplink out)")
+        return Tally()
+    started = time.monotonic()
+    with ground.boot(link) as qemu:
+
+        def halted() -> str:
+            qemu.read_until(lambda line: False, 0.001)
+            return runner.halt_lines(qemu.lines)
+
+        try:
+            outcome = file_fuzz.run(link.socket, link.dictionary, FUZZ_SEED, FILE_FUZZ_INVALID_PACKETS,
+                                    halted=halted)
+        except KitError as error:
+            (logs / "file-fuzz.console.log").write_text(qemu.text() + "\n")
+            LOG.error(f"  {name}: file-uplink fuzzing (seed {FUZZ_SEED}): FAIL: {error}")
+            return Tally(failed=1)
+        (logs / "file-fuzz.console.log").write_text(qemu.text() + "\n")
+    record = outcome.to_json()
+    (logs / "file-fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
+    failures = outcome.failures()
+    say(f"  {name}: file-uplink fuzzing (seed {outcome.seed}): {outcome.invalid_sent} invalid file packets of "
+        f"{sum(outcome.sent.values())} {dict(sorted(outcome.sent.items()))}, counted {record['counted']} "
+        f"({time.monotonic() - started:.0f} s): {'PASS' if not failures else 'FAIL: ' + '; '.join(failures)}")
     return Tally(failed=1) if failures else Tally(passed=1)
 
 

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from kittools.build.folder import CONSOLE_LOG, BuildFolder
+from kittools.build.folder import CONSOLE_LOG, BuildFolder, kit_kconfig_digest
 from kittools.log import say
 from kittools.sizes import memory
 from kittools.suite import floor, results
@@ -158,8 +158,6 @@ CONFIGURED_FROM = "kit-configured-from.sha256"
 _CONFIGURE_ENVIRONMENT = ("ZEPHYR_TOOLCHAIN_VARIANT", "GNUARMEMB_TOOLCHAIN_PATH", "ZEPHYR_SDK_INSTALL_DIR")
 
 
-#: The kit's Kconfig files: the models', the deployment's, the boards' defaults, the modules'
-_KCONFIG_FILES = ("app/**/Kconfig*", "*/Kconfig.model", "boards/**/Kconfig*", "modules/**/Kconfig*")
 
 
 def configured_from() -> str:
@@ -175,8 +173,7 @@ def configured_from() -> str:
     digest = hashlib.sha256()
     for suite in sorted(KIT_ROOT.glob("tests/**/testcase.yaml")):
         digest.update(f"{suite.relative_to(KIT_ROOT)}\0".encode() + suite.read_bytes() + b"\0")
-    for kconfig in sorted({path for pattern in _KCONFIG_FILES for path in KIT_ROOT.glob(pattern) if path.is_file()}):
-        digest.update(f"{kconfig.relative_to(KIT_ROOT)}\0".encode() + kconfig.read_bytes() + b"\0")
+    digest.update(kit_kconfig_digest(KIT_ROOT).encode())
     env = environment()
     for name in _CONFIGURE_ENVIRONMENT:
         digest.update(f"{name}={env.get(name, '')}\0".encode())
