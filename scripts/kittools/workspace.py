@@ -74,6 +74,16 @@ def uncommitted_changes(root: Path | None = None) -> list[str]:
     return [line[3:] for line in done.stdout.splitlines()] if done.returncode == 0 else []
 
 
+def commit_label(root: Path | None = None) -> str:
+    """The kit's commit as its image carries it (app/provenance.cmake): the
+    short hash, with -dirty for uncommitted changes; "unknown" without git."""
+    root = KIT_ROOT if root is None else root
+    done = subprocess.run(["git", "-C", str(root), "rev-parse", "--short=12", "HEAD"], capture_output=True, text=True,
+                          check=False)
+    label = done.stdout.strip() if done.returncode == 0 else "unknown"
+    return f"{label}-dirty" if uncommitted_changes(root) else label
+
+
 def check_committed(why: str, root: Path | None = None) -> None:
     """KitError if the kit's tree has uncommitted changes, saying `why` that matters."""
     changed = uncommitted_changes(root)

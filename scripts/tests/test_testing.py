@@ -233,6 +233,7 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
     suite.write_text("tests: {kit.rtos: {}}\n")
     monkeypatch.setattr(twister, "KIT_ROOT", tmp_path)
     monkeypatch.setattr(twister, "environment", lambda: {"ZEPHYR_TOOLCHAIN_VARIANT": "gnuarmemb"})
+    monkeypatch.setattr(twister, "commit_label", lambda root: "0123456789ab")
     out_dir = tmp_path / "out"
     out_dir.mkdir()
     commands: list[list[str]] = []
@@ -257,6 +258,9 @@ def test_twister_configures_again_unless_the_last_clean_run_was_configured_from_
     kconfig.parent.mkdir()
     kconfig.write_text("config KIT_X\n\tint\n\tdefault 1\n")
     assert play() == (False, True)  # a Kconfig default changed: Zephyr would keep the old value
+    assert play() == (True, False)
+    monkeypatch.setattr(twister, "commit_label", lambda root: "0123456789ab-dirty")
+    assert play() == (False, True)  # another commit string in the image: its code moves
 
 
 def test_an_earlier_suites_kconfig_file_goes_with_its_cmake_cache(tmp_path, monkeypatch):

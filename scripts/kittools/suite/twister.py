@@ -20,7 +20,7 @@ from kittools.sizes import memory
 from kittools.suite import floor, results
 from kittools.suite.counts import Tally, twister_tally
 from kittools.suite.platforms import TWISTER_OUT
-from kittools.workspace import KIT_ROOT, KitError, environment
+from kittools.workspace import KIT_ROOT, KitError, commit_label, environment
 
 _ANSI = re.compile(r"\x1b\[[0-9;]*[A-Za-z]")
 # Twister 4.0's announcements and, with -v, its line per finished configuration
@@ -163,8 +163,10 @@ _CONFIGURE_ENVIRONMENT = ("ZEPHYR_TOOLCHAIN_VARIANT", "GNUARMEMB_TOOLCHAIN_PATH"
 def configured_from() -> str:
     """What twister configures the kit's builds from that their own build
     files do not track: every test suite's testcase.yaml (twister hands its
-    extra_args to CMake once), the toolchain's environment, and the kit's
-    Kconfig files. Ninja configures again when a Kconfig file changes, but
+    extra_args to CMake once), the toolchain's environment, the kit's
+    commit (app/provenance.cmake writes it into the image at configure
+    time: a reused build kept an earlier commit's, '-dirty' and all, which
+    moves icount's timing), and the kit's Kconfig files. Ninja configures again when a Kconfig file changes, but
     Zephyr then takes the build's last .config as input (its .conf
     fragments unchanged), which keeps every prompted symbol's old value: a
     changed default reaches a build only configured from scratch (play).
@@ -174,6 +176,7 @@ def configured_from() -> str:
     for suite in sorted(KIT_ROOT.glob("tests/**/testcase.yaml")):
         digest.update(f"{suite.relative_to(KIT_ROOT)}\0".encode() + suite.read_bytes() + b"\0")
     digest.update(kit_kconfig_digest(KIT_ROOT).encode())
+    digest.update(f"commit={commit_label(KIT_ROOT)}\0".encode())
     env = environment()
     for name in _CONFIGURE_ENVIRONMENT:
         digest.update(f"{name}={env.get(name, '')}\0".encode())
