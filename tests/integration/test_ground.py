@@ -323,12 +323,14 @@ def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> No
 
 # A sequence as an operator writes one (fprime-gds's .seq text, compiled by
 # its fprime-seqgen against the build's dictionary): two commands at once,
-# the third a second after the second
+# the third a second after the second (commands every dispatcher has: the
+# passive one has no CMD_NO_OP_STRING)
 SEQUENCE_SETPOINT = 1234
+SEQUENCE_TIMED_SETPOINT = 4321
 SEQUENCE_TEXT = f"""; The kit's ground test sequence
 R00:00:00 Kit.cmdDisp.CMD_NO_OP
 R00:00:00 Kit.controller.SET_SETPOINT {SEQUENCE_SETPOINT}
-R00:00:01 Kit.cmdDisp.CMD_NO_OP_STRING "sequence"
+R00:00:01 Kit.controller.SET_SETPOINT {SEQUENCE_TIMED_SETPOINT}
 """
 SEQUENCE_GAP_S = 1.0
 # The sequencer's clock is the 10 Hz group: a timed record starts within a tick
@@ -374,7 +376,8 @@ def test_sequence_uplinked_and_run(fprime_test_api: Any, tmp_path: Path) -> None
     api.assert_event("Kit.cmdSeq.CS_SequenceComplete", start=start, timeout=TIMEOUT_S)
     noop = api.assert_event("Kit.cmdDisp.NoOpReceived", start=start, timeout=TIMEOUT_S)
     api.assert_event("Kit.controller.SetpointChanged", [SEQUENCE_SETPOINT], start=start, timeout=TIMEOUT_S)
-    timed = api.assert_event("Kit.cmdDisp.NoOpStringReceived", ["sequence"], start=start, timeout=TIMEOUT_S)
+    timed = api.assert_event("Kit.controller.SetpointChanged", [SEQUENCE_TIMED_SETPOINT], start=start,
+                             timeout=TIMEOUT_S)
     gap = timed.get_time().get_float() - noop.get_time().get_float()
     assert SEQUENCE_GAP_S <= gap <= SEQUENCE_GAP_S + 3 * SEQUENCE_TICK_S, f"the timed record ran {gap:.3f} s later"
     api.assert_event_count(0, "Kit.cmdSeq.CS_CommandError", start=start)
