@@ -109,7 +109,13 @@ class RunWatcher:
 
     def _watch(self) -> None:
         while not self._stop.wait(self._period_s):
-            for log in sorted(self._out_dir.glob(f"*/**/{results.RUNS_DIR}/*.log")):
+            try:
+                logs = sorted(self._out_dir.glob(f"*/**/{results.RUNS_DIR}/*.log"))
+            except OSError:
+                # CMake's try-compiles make and remove folders while the
+                # glob walks them: look again next period
+                continue
+            for log in logs:
                 if log in self._seen or log.stat().st_mtime < self._started:
                     continue
                 self._seen.add(log)
