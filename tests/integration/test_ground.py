@@ -11,7 +11,9 @@ on its telemetry, never on the host's clock.
 
 from __future__ import annotations
 
+import struct
 import time
+import zlib
 from pathlib import Path
 from typing import Any
 
@@ -396,4 +398,80 @@ def test_sequence_with_a_bad_crc_refused(fprime_test_api: Any, tmp_path: Path) -
     api.send_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"])
     api.assert_event("Kit.cmdSeq.CS_FileCrcFailure", start=start, timeout=TIMEOUT_S)
     api.assert_event_count(0, "Kit.cmdDisp.NoOpReceived", start=start)
+    api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+
+
+# F´'s sequence file (Svc/CmdSequencer/formats, fprime-gds's SeqBinaryWriter):
+# a header (the size of what follows it, the number of records, the time
+# base and its context), the records, then a CRC-32 of all before it
+SEQUENCE_HEADER = struct.Struct(">IIHB")
+SEQUENCE_CRC_BYTES = 4
+# A record descriptor past END_OF_SEQUENCE (2) names no record
+BAD_DESCRIPTOR = 7
+# Past any sequencer buffer the kit sizes (CONFIG_KIT_RAMFS_FILE_SIZE)
+SIZE_PAST_THE_BUFFER = 0x10000
+
+
+def _resealed(data: bytes) -> bytes:
+    """A sequence with its CRC computed again: the damage is in the records,
+    past the check that a CRC is right."""
+    body = data[:-SEQUENCE_CRC_BYTES]
+    return body + struct.pack(">I", zlib.crc32(body))
+
+
+def _with_header(data: bytes, **fields: int) -> bytes:
+    size, records, base, context = SEQUENCE_HEADER.unpack_from(data)
+    values = {"size": size, "records": records, "base": base, "context": context} | fields
+    header = SEQUENCE_HEADER.pack(values["size"], values["records"], values["base"], values["context"])
+    return _resealed(header + data[SEQUENCE_HEADER.size:])
+
+
+def _bad_descriptor(data: bytes) -> bytes:
+    return _resealed(data[:SEQUENCE_HEADER.size] + bytes([BAD_DESCRIPTOR]) + data[SEQUENCE_HEADER.size + 1:])
+
+
+def _more_records(data: bytes) -> bytes:
+    return _with_header(data, records=SEQUENCE_HEADER.unpack_from(data)[1] + 1)
+
+
+def _fewer_records(data: bytes) -> bytes:
+    return _with_header(data, records=SEQUENCE_HEADER.unpack_from(data)[1] - 1)
+
+
+def _no_records(data: bytes) -> bytes:
+    return _with_header(data, records=0)
+
+
+def _size_past_the_buffer(data: bytes) -> bytes:
+    return _with_header(data, size=SIZE_PAST_THE_BUFFER)
+
+
+# Each damage with the event CmdSequencer refuses it with. A file cut short
+# of its header's size is not among them: FileUplink opens its destination
+# with OPEN_WRITE, which keeps what a longer earlier file left past the new
+# end (MicroFs as F´'s Posix file does), so the sequencer reads on into an
+# earlier upload and refuses the CRC instead
+BAD_SEQUENCES = {
+    "a record descriptor that names no record": (_bad_descriptor, "CS_RecordInvalid"),
+    "a header counting more records than the file holds": (_more_records, "CS_RecordInvalid"),
+    "a header counting fewer records than the file holds": (_fewer_records, "CS_RecordMismatch"),
+    "a header counting no records": (_no_records, "CS_NoRecords"),
+    "a header's size past the sequencer's buffer": (_size_past_the_buffer, "CS_FileSizeError"),
+}
+
+
+@pytest.mark.parametrize("damage", list(BAD_SEQUENCES), ids=lambda damage: damage.replace(" ", "-"))
+def test_sequence_with_bad_records_refused(fprime_test_api: Any, tmp_path: Path, damage: str) -> None:
+    """A sequence with a sound CRC and damaged records or header is refused
+    with CmdSequencer's event for that damage, none of its commands runs,
+    and the deployment goes on answering."""
+    api = fprime_test_api
+    destination, sequence = _sequence(api, tmp_path)
+    damaged, event = BAD_SEQUENCES[damage]
+    _uplink(api, tmp_path, "kit-bad-records.bin", damaged(sequence), destination)
+    start = api.get_event_test_history().size()
+    api.send_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"])
+    api.assert_event(f"Kit.cmdSeq.{event}", start=start, timeout=TIMEOUT_S)
+    api.assert_event_count(0, "Kit.cmdDisp.NoOpReceived", start=start)
+    api.assert_event_count(0, "Kit.controller.SetpointChanged", start=start)
     api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
