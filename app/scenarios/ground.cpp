@@ -10,7 +10,8 @@
 // is the serial-load sweep's measurement: when the ground asks
 // (Timing.MEASURE_SEGMENT), the main loop stops at the next hyperperiod,
 // measures the requested segment under whatever load the ground applies
-// (commands up the link, or Load.SET_DOWNLINK's packets down it) and prints
+// (commands up the link, Load.SET_DOWNLINK's packets down it, or the file
+// downlink's SendPartial files down it) and prints
 // its SWEEP lines, then serves on. scripts/kittools/link/serial_sweep.py drives it.
 
 #include "app/Top/KitTopology.hpp"
@@ -41,6 +42,10 @@ Report::SweepPoint pointOf(const Timing::Segment& segment) {
         case SegmentAxis::NOISE:
             name = "noise";
             unit = "%";  // of the line rate
+            break;
+        case SegmentAxis::FILE_DOWNLINK:
+            name = "file";
+            unit = "B/s";  // of file data
             break;
         default:
             FW_ASSERT(0, static_cast<FwAssertArgType>(segment.axis.e));

@@ -2,7 +2,8 @@
 """The load sweeps of a variant, from its SWEEP and BREAK records: the
 background-load axes (app/scenarios/load.cpp) and the serial-load axes
 (app/scenarios/ground.cpp, driven by kittools.link.serial_sweep). Each axis has
-its unit (`us` of computation, `cmd/s` up the link, `pkt/s` down it);
+its unit (`us` of computation, `cmd/s` up the link, `pkt/s` down it, `B/s`
+of file data down it);
 docs/results.md describes the records."""
 
 from __future__ import annotations
@@ -113,7 +114,7 @@ class Sweep:
 #: The units of the host-timed axes: the serial ones, whose bytes reach
 #: QEMU at instants the host's scheduling decides (load's `us` axes run
 #: under icount alone and are exact)
-HOST_TIMED_UNITS = ("cmd/s", "pkt/s", "%")
+HOST_TIMED_UNITS = ("cmd/s", "pkt/s", "%", "B/s")
 #: On a host-timed axis a rate group breaks, and the link's delivery breaks,
 #: where the median play missed more than this share of its deadlines or
 #: lost more than this share of its commands. Below it misses and losses

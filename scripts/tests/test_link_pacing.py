@@ -4,6 +4,10 @@ sweep and the flood offer per point, and how they account for every byte."""
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+from unittest import mock
+
 import pytest
 
 from kittools.link import client, flood, serial_points
@@ -194,3 +198,46 @@ def test_an_idle_line_banks_no_time():
     start = clock.now
     list(line.pieces(bytes(46)))
     assert clock.now - start == pytest.approx(23 / 11520)
+
+
+def test_a_file_level_asks_for_parts_of_the_bulk_file_at_its_rate():
+    # A part every FILE_PERIOD_S while a part that size fits the file ...
+    part, per_s = serial_points.file_request(2048, 16384)
+    assert part == int(2048 * serial_points.FILE_PERIOD_S) and per_s * part == pytest.approx(2048)
+    # ... then the whole file, more often; nothing at level 0
+    part, per_s = serial_points.file_request(11520, 2048)
+    assert part == 2048 and per_s == pytest.approx(11520 / 2048)
+    assert serial_points.file_request(0, 2048) == (0, 0.0)
+
+
+def test_a_file_point_offers_the_bytes_asked_for_and_delivers_those_received():
+    traffic = PointTraffic(serial_points.FILE.name, 0, 2048, file_bytes_asked=1536, file_bytes_received=1024)
+    assert (traffic.offered(), traffic.delivered()) == (1536, 1024)
+    assert "offered=1536 delivered=1024 lost=512" in traffic.record()
+
+
+# The least of a dictionary fprime-gds loads: file packets need none of it
+EMPTY_DICTIONARY = {"metadata": {"deploymentName": "Kit", "projectVersion": "test", "frameworkVersion": "4.1.0",
+                                 "libraryVersions": [], "dictionarySpecVersion": "1.0.0"},
+                    "typeDefinitions": [], "constants": [], "commands": [], "parameters": [], "events": [],
+                    "telemetryChannels": [], "records": [], "containers": [], "telemetryPacketSets": []}
+
+
+def test_the_downlink_counts_file_data_bytes_and_ended_files(tmp_path: Path):
+    dictionary = tmp_path / "KitTopologyDictionary.json"
+    dictionary.write_text(json.dumps(EMPTY_DICTIONARY))
+    # No QEMU: the socket is never read, the frames are decoded as they would be
+    with mock.patch("socket.socket"):
+        link = client.Downlink(tmp_path / "link.sock", dictionary)
+    header = client.DESCRIPTOR.pack(client.FW_PACKET_FILE)
+    data = header + client.FILE_PACKET_HEADER.pack(client.T_DATA, 1) + client.FILE_DATA_FIELDS.pack(0, 5) + bytes(5)
+    end = header + client.FILE_PACKET_HEADER.pack(client.T_END, 2) + bytes(4)
+    cut_short = header + bytes([client.T_DATA])
+    link._decode(b"".join(client.frame(packet) for packet in (data, data, end, cut_short)))
+    assert (link.file_bytes, link.files_ended) == (10, 1)
+
+
+def test_every_serial_axis_is_judged_as_host_timed():
+    from kittools import sweep
+
+    assert {axis.unit for axis in serial_points.AXES} <= set(sweep.HOST_TIMED_UNITS)

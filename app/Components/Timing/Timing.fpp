@@ -8,6 +8,7 @@ module Kit {
         UPLINK = 0 @< commands from the ground, in commands per second
         DOWNLINK = 1 @< extra downlink packets (Load.SET_DOWNLINK), in packets per second
         NOISE = 2 @< random bytes up the link, in percent of its line rate
+        FILE_DOWNLINK = 3 @< file data Svc.FileDownlink sends down (SendPartial from the ground), in bytes per second
     }
 
     @ Why a segment was not measured

@@ -29,6 +29,12 @@ OPCODE = struct.Struct(">I")  # FwOpcodeType
 FW_PACKET_COMMAND = 0
 FW_PACKET_TELEM = 1
 FW_PACKET_LOG = 2
+FW_PACKET_FILE = 3
+# Fw::FilePacket (Fw/FilePacket/FilePacket.hpp): its types, its header and a
+# data packet's fields
+T_START, T_DATA, T_END, T_CANCEL = 0, 1, 2, 3
+FILE_PACKET_HEADER = struct.Struct(">BI")  # type, sequence index
+FILE_DATA_FIELDS = struct.Struct(">IH")  # byte offset, data size
 
 
 #: A UART character on the line: start bit, 8 data bits, stop bit
@@ -98,6 +104,10 @@ class Downlink:
         self.event_time: dict[str, float] = {}
         # The arguments of the newest event of each name
         self.event_args: dict[str, tuple[object, ...]] = {}
+        # File packets (Svc.FileDownlink's): the data bytes of every data
+        # packet, and the files whose end packet came down
+        self.file_bytes = 0
+        self.files_ended = 0
         # The newest time tag of anything decoded: the deployment's clock, as
         # far as the ground knows it
         self.now = 0.0
@@ -200,6 +210,16 @@ class Downlink:
                     self.telemetry[name] = sample.get_val()
                     self.telemetry_time[name] = sample.get_time().get_float()
                     self.now = max(self.now, self.telemetry_time[name])
+            elif descriptor == FW_PACKET_FILE and len(body) >= FILE_PACKET_HEADER.size:
+                self._count_file_packet(body)
+
+    def _count_file_packet(self, body: bytes) -> None:
+        (kind, _sequence) = FILE_PACKET_HEADER.unpack_from(body)
+        if kind == T_DATA and len(body) >= FILE_PACKET_HEADER.size + FILE_DATA_FIELDS.size:
+            (_offset, size) = FILE_DATA_FIELDS.unpack_from(body, FILE_PACKET_HEADER.size)
+            self.file_bytes += size
+        elif kind == T_END:
+            self.files_ended += 1
 
 
 class Stopwatch:

@@ -33,16 +33,23 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from kittools.link.client import DESCRIPTOR, Downlink, command, frame
+from kittools.link.client import (
+    DESCRIPTOR,
+    FILE_DATA_FIELDS,
+    FILE_PACKET_HEADER,
+    FW_PACKET_FILE,
+    T_CANCEL,
+    T_DATA,
+    T_END,
+    T_START,
+    Downlink,
+    command,
+    frame,
+)
 from kittools.link.fuzz import MISSED_ANSWERS_MAX, NOOP_EVENT, PADDING, REPLY_TIMEOUT_S, SETTLE_S, answered
 from kittools.workspace import KitError
 
-FW_PACKET_FILE = 3
-# Fw::FilePacket's types (Fw/FilePacket/FilePacket.hpp)
-T_START, T_DATA, T_END, T_CANCEL = 0, 1, 2, 3
-PACKET_HEADER = struct.Struct(">BI")  # type, sequence index
 START_FIELDS = struct.Struct(">I")  # file size; then the two length-prefixed paths
-DATA_FIELDS = struct.Struct(">IH")  # byte offset, data size
 END_FIELDS = struct.Struct(">I")  # CFDP checksum
 
 # Where the fuzzer writes: the scratch file (a sequence's place; the
@@ -163,7 +170,7 @@ def file_packet(kind: str, rng: random.Random, model: FileUplinkModel, scratch: 
         good = kind == "start"
         destination = scratch if good else rng.choice(BAD_DESTINATIONS)
         model.start(size, good)
-        body = PACKET_HEADER.pack(T_START, 0) + START_FIELDS.pack(size) + _path("kit-fuzz") + _path(destination)
+        body = FILE_PACKET_HEADER.pack(T_START, 0) + START_FIELDS.pack(size) + _path("kit-fuzz") + _path(destination)
     elif kind.startswith("data_") and kind != "data_size_mismatch":
         room = max(0, model.size - model.written)
         payload = rng.randbytes(rng.randint(1, DATA_MAX_BYTES))
@@ -181,17 +188,17 @@ def file_packet(kind: str, rng: random.Random, model: FileUplinkModel, scratch: 
             if offset + len(payload) <= model.size:
                 offset = model.size + 1
         model.data(sequence, offset, payload)
-        body = PACKET_HEADER.pack(T_DATA, sequence) + DATA_FIELDS.pack(offset, len(payload)) + payload
+        body = FILE_PACKET_HEADER.pack(T_DATA, sequence) + FILE_DATA_FIELDS.pack(offset, len(payload)) + payload
     elif kind in ("end_good", "end_bad_checksum"):
         checksum = model.checksum if kind == "end_good" else (model.checksum + rng.randint(1, 0xFFFFFFFE)) & 0xFFFFFFFF
         model.end(sequence, checksum)
-        body = PACKET_HEADER.pack(T_END, sequence) + END_FIELDS.pack(checksum)
+        body = FILE_PACKET_HEADER.pack(T_END, sequence) + END_FIELDS.pack(checksum)
     elif kind == "cancel":
         model.cancel()
-        body = PACKET_HEADER.pack(T_CANCEL, sequence)
+        body = FILE_PACKET_HEADER.pack(T_CANCEL, sequence)
     elif kind == "bad_type":
         model.decode_errors += 1
-        body = PACKET_HEADER.pack(rng.randint(T_CANCEL + 1, 0xFE), sequence) + rng.randbytes(rng.randint(0, 8))
+        body = FILE_PACKET_HEADER.pack(rng.randint(T_CANCEL + 1, 0xFE), sequence) + rng.randbytes(rng.randint(0, 8))
     elif kind == "truncated":
         model.decode_errors += 1
         body = bytes([rng.choice((T_START, T_DATA, T_END))]) + rng.randbytes(rng.randint(0, 3))
@@ -199,9 +206,9 @@ def file_packet(kind: str, rng: random.Random, model: FileUplinkModel, scratch: 
         model.decode_errors += 1
         payload = rng.randbytes(rng.randint(0, DATA_MAX_BYTES))
         claimed = len(payload) + rng.choice((-1, 1)) * rng.randint(1, 8)
-        body = PACKET_HEADER.pack(T_DATA, sequence) + DATA_FIELDS.pack(0, max(claimed, 0) & 0xFFFF) + payload
+        body = FILE_PACKET_HEADER.pack(T_DATA, sequence) + FILE_DATA_FIELDS.pack(0, max(claimed, 0) & 0xFFFF) + payload
         if claimed < 0:  # nothing to claim less than: claim more
-            body = PACKET_HEADER.pack(T_DATA, sequence) + DATA_FIELDS.pack(0, len(payload) + 1) + payload
+            body = FILE_PACKET_HEADER.pack(T_DATA, sequence) + FILE_DATA_FIELDS.pack(0, len(payload) + 1) + payload
     else:
         raise ValueError(f"unknown kind {kind}")
     return DESCRIPTOR.pack(FW_PACKET_FILE) + body

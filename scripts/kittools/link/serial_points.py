@@ -36,7 +36,18 @@ class Axis:
 UPLINK = Axis("uplink", 0, "cmd/s", (0, 50, 100, 200, 300))
 DOWNLINK = Axis("downlink", 1, "pkt/s", (0, 100, 200, 400, 800, 1600))
 NOISE = Axis("noise", 2, "%", (0, 25, 50, 75, 100))
-AXES = (UPLINK, DOWNLINK, NOISE)
+# The file downlink (F´'s Svc.FileDownlink, where the build has it): file
+# data a second, asked for by the ground as SendPartial commands of the bulk
+# file, up to a full line (the sweep adds that level: the line rate in bytes)
+FILE = Axis("file", 3, "B/s", (0, 1024, 2048, 4096, 8192))
+AXES = (UPLINK, DOWNLINK, NOISE, FILE)
+# A file level asks for a part of the bulk file this often (a steadier load
+# than a whole file now and then), the whole file when a part that size is
+# more than it holds, then more often: FileDownlink starts a queued file at
+# its 10 Hz Run, and pauses 100 ms after each (Kit.FileDownlinkTimings), so
+# past some level it cannot keep up, and refuses what its one-deep queue
+# cannot take: the axis' delivery breaking point
+FILE_PERIOD_S = 0.25
 #: Each level is played this many times (latencies as median and spread)
 REPEATS = 3
 SLICE_HZ = 100  # Load's slices per second: a downlink level is packets per slice times this
@@ -60,6 +71,15 @@ SEGMENT_ARGUMENTS = struct.Struct(">iIII")  # SegmentAxis (I32), point, level, t
 def full_line_commands(baud: int, noop_frame: bytes) -> int:
     """NO_OPs a second that fill the line."""
     return int(bytes_per_second(baud)) // len(noop_frame)
+
+
+def file_request(level: int, file_bytes: int) -> tuple[int, float]:
+    """(bytes each SendPartial asks for, SendPartials a second) of a file
+    level, from a bulk file of `file_bytes`."""
+    if level <= 0 or file_bytes <= 0:
+        return 0, 0.0
+    part = min(file_bytes, max(1, int(level * FILE_PERIOD_S)))
+    return part, level / part
 
 
 def noise_per_second(baud: int, noop_frame: bytes, level: int) -> float:
@@ -92,12 +112,20 @@ class PointTraffic:
     uart_errors: int = 0
     #: MEASURE_SEGMENT commands sent (more than one: the link lost one)
     requests: int = 0
+    #: The file axis: file bytes its SendPartials asked for, and the data
+    #: bytes of the file packets the ground received for them
+    file_bytes_asked: int = 0
+    file_bytes_received: int = 0
 
     def offered(self) -> int:
-        return self.packets_received + self.packets_lost if self.axis == DOWNLINK.name else self.commands_sent
+        if self.axis == DOWNLINK.name:
+            return self.packets_received + self.packets_lost
+        return self.file_bytes_asked if self.axis == FILE.name else self.commands_sent
 
     def delivered(self) -> int:
-        return self.packets_received if self.axis == DOWNLINK.name else self.commands_dispatched
+        if self.axis == DOWNLINK.name:
+            return self.packets_received
+        return self.file_bytes_received if self.axis == FILE.name else self.commands_dispatched
 
     def record(self) -> str:
         """The point as a console-style SERIAL record, beside the SWEEP lines."""
@@ -188,12 +216,13 @@ class Schedule:
 
 
 class Offer:
-    """A point's traffic: NO_OPs at `commands_per_s`, and noise (bytes that
-    frame nothing) at `noise_per_s` with its NO_OPs among it, POINT_S of
-    the deployment's time of each (a Line carries them at the line rate)."""
+    """A point's traffic: a command's frame (a NO_OP; the file axis'
+    SendPartial) at `commands_per_s`, and noise (bytes that frame nothing)
+    at `noise_per_s` with its commands among it, POINT_S of the
+    deployment's time of each (a Line carries them at the line rate)."""
 
-    def __init__(self, noop: bytes, commands_per_s: float, noise_per_s: float = 0.0, seed: int = 0) -> None:
-        self.noop = noop
+    def __init__(self, command_frame: bytes, commands_per_s: float, noise_per_s: float = 0.0, seed: int = 0) -> None:
+        self.command_frame = command_frame
         self._commands = Schedule(commands_per_s, int(commands_per_s * POINT_S))
         self._noise = Schedule(noise_per_s, int(noise_per_s * POINT_S))
         self._rng = random.Random(seed)
@@ -202,7 +231,7 @@ class Offer:
         """The bytes due after `elapsed` seconds (the traffic's counts brought up to date)."""
         commands = self._commands.due(elapsed)
         traffic.commands_sent += commands
-        return self.noop * commands + noise(self._rng, self._noise.due(elapsed))
+        return self.command_frame * commands + noise(self._rng, self._noise.due(elapsed))
 
     def complete(self) -> bool:
         return self._commands.complete() and self._noise.complete()

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """The serial-load sweep: what traffic on the ground link costs the rate groups.
 
-Three axes, each driven from outside through the real link (a build of the
+Four axes, each driven from outside through the real link (a build of the
 ground scenario under QEMU, kittools.link.client on its socket), all paced
 by the deployment's own clock as the downlink shows it (QEMU's virtual time
 is not the host's), at the link's line rate (the LINK line's baud: the link
@@ -14,6 +14,12 @@ UART's devicetree current-speed):
   noise     random bytes that frame nothing, at a share (%) of what the
             line carries beside NOISE_NOOP_RATE valid NO_OPs a second among
             them: a noisy or babbling line.
+  file      file data down (B/s), where the build has F´'s file downlink:
+            the bulk file filled with the kit's pattern, then parts of it
+            asked for with FileDownlink's SendPartial at a steady rate, up
+            to a full line; what came down is the data bytes of the file
+            packets the host received (every play waits until the downlink
+            has gone quiet, so nothing spills into the next).
 
 At each level the deployment measures a segment on request
 (Timing.MEASURE_SEGMENT) and prints one SWEEP line per rate group, the
@@ -39,6 +45,7 @@ import json
 import struct
 import time
 from pathlib import Path
+from typing import Any
 
 from kittools.build import runner
 from kittools.link import ground
@@ -56,6 +63,7 @@ from kittools.link.client import (
 from kittools.link.health import REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import (
     DOWNLINK,
+    FILE,
     NOISE,
     NOISE_NOOP_RATE,
     NOISE_SEED,
@@ -70,6 +78,7 @@ from kittools.link.serial_points import (
     Offer,
     Outcome,
     PointTraffic,
+    file_request,
     full_line_commands,
     noise_per_second,
     traffic_time,
@@ -81,6 +90,20 @@ DOWNLINK_PACKET_EVENT = "Kit.load.DownlinkLoadPacket"
 # The wait for a segment after a request, before it is sent again
 REQUEST_RETRY_S = 1.0
 U32 = struct.Struct(">I")
+# The file axis: the bulk file (Kit.RamFs.bulkFile) is filled with the
+# kit's pattern first (Load.FILL_FILE, asked for more than any bulk file
+# holds; its FileFilled event says how much it took)
+BULK_FILE_CONSTANT = "Kit.RamFs.bulkFile"
+FILE_FILLED_EVENT = "Kit.load.FileFilled"
+FILL_ASK_BYTES = 1 << 20
+FILL_SEED = 20261205
+# The ground's name for what the file axis downlinks (fprime-gds is not on
+# the link during the sweep: nothing writes it)
+SWEEP_FILE_DESTINATION = "kit-sweep.bin"
+# A play of the file axis ends when no file data has come down for this
+# long in the deployment's time: longer than FileDownlink's pause between
+# files and its Run period together
+FILE_QUIET_S = 0.5
 
 
 class Driver:
@@ -95,6 +118,28 @@ class Driver:
 
     def send(self, name: str, arguments: bytes = b"") -> None:
         self.link.send(frame(command(self.opcodes[name], arguments)))
+
+    def fill_bulk_file(self, bulk: str) -> int:
+        """Fill the bulk file with the kit's pattern; the bytes it holds."""
+        filled = self.link.events[FILE_FILLED_EVENT]
+        self.send("Kit.load.FILL_FILE", string_argument(bulk) + U32.pack(FILL_ASK_BYTES) + U32.pack(FILL_SEED))
+        if not self.link.pump(lambda: self.link.events[FILE_FILLED_EVENT] > filled, REPLY_TIMEOUT_S):
+            raise KitError(f"no {FILE_FILLED_EVENT} within {REPLY_TIMEOUT_S:.0f} s of Load.FILL_FILE {bulk}")
+        return int(str(self.link.event_args[FILE_FILLED_EVENT][1]))
+
+    def file_quiet(self) -> None:
+        """Read the downlink until no file data has come for FILE_QUIET_S
+        of the deployment's time (the file downlink has sent what it was asked)."""
+        last_bytes, last_change = self.link.file_bytes, self.link.now
+
+        def quiet() -> bool:
+            nonlocal last_bytes, last_change
+            if self.link.file_bytes != last_bytes:
+                last_bytes, last_change = self.link.file_bytes, self.link.now
+            return self.link.now - last_change > FILE_QUIET_S
+
+        if not self.link.pump(quiet, REPLY_TIMEOUT_S):
+            raise KitError(f"the file downlink was still sending {REPLY_TIMEOUT_S:.0f} s after a file point")
 
     def newest_packet(self) -> int:
         """The number of the newest downlink-load packet received (-1: none yet)."""
@@ -183,14 +228,24 @@ ENTRY_LENGTH = struct.Struct(">H")  # FwSizeStoreType, a string argument's lengt
 ENABLED = struct.Struct(">B")  # Fw.Enabled
 
 
+def string_argument(text: str) -> bytes:
+    """A command's string argument: its length (FwSizeStoreType), then its bytes."""
+    data = text.encode()
+    return ENTRY_LENGTH.pack(len(data)) + data
+
+
 def ping_enable(opcodes: dict[str, int], entry: str, enabled: bool) -> bytes | None:
     """The frame of health's HLTH_PING_ENABLE for `entry`, or None where
     the build has no health (its board's profile leaves it out)."""
     opcode = opcodes.get("Kit.health.HLTH_PING_ENABLE")
     if opcode is None:
         return None
-    name = entry.encode()
-    return frame(command(opcode, ENTRY_LENGTH.pack(len(name)) + name + ENABLED.pack(int(enabled))))
+    return frame(command(opcode, string_argument(entry) + ENABLED.pack(int(enabled))))
+
+
+def data_constants(data: dict[str, Any]) -> dict[str, Any]:
+    """A dictionary's constants by qualified name."""
+    return {c["qualifiedName"]: c["value"] for c in data.get("constants", [])}
 
 
 def run(build: Path, repeats: int = REPEATS) -> Outcome:
@@ -247,6 +302,22 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
                                   NOISE_SEED + traffic.point)
                     outcome.lines += driver.measure(NOISE, traffic, offer)
                     outcome.traffic.append(traffic)
+            send_partial = opcodes.get("Kit.fileDownlink.SendPartial")
+            if send_partial is not None:
+                bulk = str(data_constants(data)[BULK_FILE_CONSTANT])
+                file_bytes = driver.fill_bulk_file(bulk)
+                for level in (*FILE.levels, int(bytes_per_second(baud))):
+                    part, per_s = file_request(level, file_bytes)
+                    request = frame(command(send_partial, string_argument(bulk)
+                                            + string_argument(SWEEP_FILE_DESTINATION) + U32.pack(0) + U32.pack(part)))
+                    for repeat in range(repeats):
+                        traffic = PointTraffic(FILE.name, next(points), level, repeat)
+                        received_before = link.file_bytes
+                        outcome.lines += driver.measure(FILE, traffic, Offer(request, per_s))
+                        driver.file_quiet()
+                        traffic.file_bytes_asked = traffic.commands_sent * part
+                        traffic.file_bytes_received = link.file_bytes - received_before
+                        outcome.traffic.append(traffic)
             outcome.events = dict(sorted(link.events.items()))
             outcome.telemetry = dict(sorted(link.telemetry.items()))
         except KitError as error:

@@ -13,8 +13,14 @@ from kittools import sweep
 from kittools.model import Results, Variant
 from kittools.report.document import Table, Text, fmt
 
-#: Axes whose delivery is NO_OPs the link passed to the dispatcher
+#: Axes whose delivery is NO_OPs the link passed to the dispatcher: the
+#: baseline gate holds their delivery breaking points (kittools.suite.budget)
 COMMAND_AXES = ("uplink", "noise")
+#: Every axis whose delivery has a breaking point, with its unit. The file
+#: axis' is reported, not gated: it is where FileDownlink's own cadence (a
+#: file started at its 10 Hz Run, 100 ms between files, one queued) stops
+#: keeping up, and which Run a host-timed SendPartial lands before moves it
+DELIVERY_UNITS = {"uplink": "cmd/s", "noise": "%", "file": "B/s"}
 
 
 def serial_plays(variant: Variant) -> dict[tuple[str, int], list[dict[str, Any]]]:
@@ -67,13 +73,14 @@ def serial_link_table(data: Results) -> Table | None:
     for v in names:
         columns += [f"{v} delivered (each play)", f"{v} ring drops (B)"]
     return Table("Serial load: what the link delivered, play by play (uplink, noise: NO_OPs the link passed to the "
-                 "dispatcher; downlink: packets the ground received, by their numbers; ring drops: bytes the UART "
-                 "driver's receive ring had no room for)", columns, rows)
+                 "dispatcher; downlink: packets the ground received, by their numbers; file: file data bytes the "
+                 "ground received of those SendPartial asked for; ring drops: bytes the UART driver's receive ring "
+                 "had no room for)", columns, rows)
 
 
 def delivery_breaking_point(plays: dict[tuple[str, int], list[dict[str, Any]]], axis: str) -> int | None:
     """The lowest level of an axis where the median play lost more than
-    sweep.HOST_TIMED_SHARE of the commands offered (and at least one)."""
+    sweep.HOST_TIMED_SHARE of what it offered (and at least one)."""
     for (found_axis, level), records in sorted(plays.items()):
         if found_axis != axis:
             continue
@@ -88,16 +95,16 @@ def delivery_table(data: Results) -> Table | None:
     """Where each model's link starts to lose commands, per command axis."""
     names = data.names()
     found = {v: _plays(data, v) for v in names}
-    axes = [a for a in COMMAND_AXES if any(k[0] == a for v in names for k in found[v])]
+    axes = [a for a in DELIVERY_UNITS if any(k[0] == a for v in names for k in found[v])]
     if not axes:
         return None
     rows = []
     for axis in axes:
-        unit = "cmd/s" if axis == "uplink" else "%"
         points = [delivery_breaking_point(found[v], axis) for v in names]
-        rows.append([axis] + [f"{p} {unit}" if p is not None else "held" for p in points])
+        rows.append([axis] + [f"{p} {DELIVERY_UNITS[axis]}" if p is not None else "held" for p in points])
     return Table(f"Delivery breaking point: the lowest level where the median play lost more than "
-                 f"{sweep.HOST_TIMED_SHARE:.0%} of its commands (every play's count is below)", ["axis"] + names, rows)
+                 f"{sweep.HOST_TIMED_SHARE:.0%} of what it offered (commands; the file axis: file bytes asked for; "
+                 f"every play's count is below)", ["axis"] + names, rows)
 
 
 def flood_table(data: Results) -> Table | None:
