@@ -205,27 +205,39 @@ FUZZ_INVALID_FRAMES = 10_000
 FUZZ_INVALID_FRAMES_OTHER_BOARDS = 2_500
 
 
-def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
-    """Boot a ground build and fuzz its uplink (kittools.link.fuzz); the outcome
-    goes to fuzz.json beside the other logs."""
-    link = ground.link_of(build)
-    started = time.monotonic()
+def _played_booted(link: ground.Link, play: Callable[[Callable[[], str]], _R], console_log: Path,
+                   what: str) -> _R | None:
+    """Boot a ground build and play `play` on its link, given how to ask
+    whether the deployment halted; its console goes to `console_log`.
+    None where the play failed (a failed check, logged under `what`, not
+    the end of `kit test`)."""
     with ground.boot(link) as qemu:
 
         def halted() -> str:
             qemu.read_until(lambda line: False, 0.001)
             return runner.halt_lines(qemu.lines)
 
-        reference = link.board.split("/")[0] == REFERENCE_BOARD
-        frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
         try:
-            outcome = fuzz.run(link.socket, link.dictionary, FUZZ_SEED, frames, halted=halted)
+            return play(halted)
         except KitError as error:
-            # A failed check, not the end of `kit test`
-            (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
-            LOG.error(f"  {name}: fuzzing (seed {FUZZ_SEED}): FAIL: {error}")
-            return Tally(failed=1)
-        (logs / "fuzz.console.log").write_text(qemu.text() + "\n")
+            LOG.error(f"{what}: FAIL: {error}")
+            return None
+        finally:
+            console_log.write_text(qemu.text() + "\n")
+
+
+def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
+    """Boot a ground build and fuzz its uplink (kittools.link.fuzz); the outcome
+    goes to fuzz.json beside the other logs."""
+    link = ground.link_of(build)
+    started = time.monotonic()
+    reference = link.board.split("/")[0] == REFERENCE_BOARD
+    frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
+    outcome = _played_booted(
+        link, lambda halted: fuzz.run(link.socket, link.dictionary, FUZZ_SEED, frames, halted=halted),
+        logs / "fuzz.console.log", f"  {name}: fuzzing (seed {FUZZ_SEED})")
+    if outcome is None:
+        return Tally(failed=1)
     record = outcome.to_json()
     (logs / "fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
     failures = outcome.failures()
@@ -250,20 +262,12 @@ def file_fuzz_build(build: Path, name: str, logs: Path) -> Tally:
         say(f"  {name}: file-uplink fuzzing: skipped (this board's profile leaves F´'s file uplink out)")
         return Tally()
     started = time.monotonic()
-    with ground.boot(link) as qemu:
-
-        def halted() -> str:
-            qemu.read_until(lambda line: False, 0.001)
-            return runner.halt_lines(qemu.lines)
-
-        try:
-            outcome = file_fuzz.run(link.socket, link.dictionary, FUZZ_SEED, FILE_FUZZ_INVALID_PACKETS,
-                                    halted=halted)
-        except KitError as error:
-            (logs / "file-fuzz.console.log").write_text(qemu.text() + "\n")
-            LOG.error(f"  {name}: file-uplink fuzzing (seed {FUZZ_SEED}): FAIL: {error}")
-            return Tally(failed=1)
-        (logs / "file-fuzz.console.log").write_text(qemu.text() + "\n")
+    outcome = _played_booted(
+        link, lambda halted: file_fuzz.run(link.socket, link.dictionary, FUZZ_SEED, FILE_FUZZ_INVALID_PACKETS,
+                                           halted=halted),
+        logs / "file-fuzz.console.log", f"  {name}: file-uplink fuzzing (seed {FUZZ_SEED})")
+    if outcome is None:
+        return Tally(failed=1)
     record = outcome.to_json()
     (logs / "file-fuzz.json").write_text(json.dumps(record, indent=2) + "\n")
     failures = outcome.failures()
