@@ -81,6 +81,7 @@ Os::QueueInterface::Status CooperativeQueue::receive(U8* destination,
     actualSize = m_slots.pop(destination, capacity, priority);
     FW_ASSERT(s_queued > 0);
     s_queued--;
+    s_received++;
     if (m_watched) {
         Stages::mark(StageMark::RECEIVED);
     }
@@ -88,9 +89,14 @@ Os::QueueInterface::Status CooperativeQueue::receive(U8* destination,
 }
 
 FwSizeType CooperativeQueue::s_queued = 0;
+U32 CooperativeQueue::s_received = 0;
 
 FwSizeType CooperativeQueue::queuedMessages() {
     return s_queued;
+}
+
+U32 CooperativeQueue::receivedMessages() {
+    return s_received;
 }
 
 FwSizeType CooperativeQueue::getMessagesAvailable() const {

@@ -49,9 +49,15 @@ class CooperativeQueue final : public Os::QueueInterface {
     //! Messages waiting in every queue of the deployment: a main loop with
     //! nothing queued has nothing left to run until the next tick
     static FwSizeType queuedMessages();
+    //! Messages taken from every queue of the deployment so far (it wraps).
+    //! A pass of the tasks that leaves it unchanged handled nothing: what is
+    //! still queued waits for a queued component's rate group (Svc.Health's
+    //! ping answers wait for its Run), which runs at a tick, not in a pass
+    static U32 receivedMessages();
 
   private:
     static FwSizeType s_queued;  //!< the sum of every queue's count (only the main loop touches it)
+    static U32 s_received;       //!< messages taken from any queue (only the main loop touches it)
     SlotQueue m_slots;
     bool m_watched = false;  //!< this queue's component is the one broken into stages
     CooperativeQueueHandle m_handle;

@@ -174,6 +174,24 @@ TEST_F(CooperativeQueueTest, QueuedMessagesCountsEveryQueueUntilItsTeardown) {
     EXPECT_EQ(CooperativeQueue::queuedMessages(), 0u);  // the destructor tore the other down
 }
 
+TEST_F(CooperativeQueueTest, ReceivedMessagesCountsWhatWasTakenNotWhatWasRefused) {
+    // The passive policy's drain ends on a pass that took nothing
+    CooperativeQueue queue;
+    ASSERT_EQ(create(queue), Status::OP_OK);
+    const U32 before = CooperativeQueue::receivedMessages();
+    Status status = Status::OP_OK;
+    EXPECT_EQ(receive(queue, &status), -1);  // empty: nothing taken
+    EXPECT_EQ(status, Status::EMPTY);
+    EXPECT_EQ(CooperativeQueue::receivedMessages(), before);
+    EXPECT_EQ(send(queue, 1), Status::OP_OK);
+    EXPECT_EQ(send(queue, 2), Status::OP_OK);
+    EXPECT_EQ(CooperativeQueue::receivedMessages(), before);  // sending takes nothing
+    EXPECT_EQ(receive(queue), 1);
+    EXPECT_EQ(receive(queue), 2);
+    EXPECT_EQ(CooperativeQueue::receivedMessages(), before + 2);
+    queue.teardown();
+}
+
 TEST_F(CooperativeQueueTest, OnlyTheWatchedQueueMarksItsStages) {
     CooperativeQueue watched;
     CooperativeQueue other;
