@@ -55,29 +55,30 @@ namespace {
 struct PingEntry {
     const char* name;
     PingProbe* probe;
+    const Fw::QueuedComponentBase* pinged;  //!< whose queue the probe watches (PingProbe::watchQueue)
 };
 const PingEntry PING_ENTRIES[PING_ENTRY_COUNT] = {
-    {"events", &eventsPing},
-    {"tlmSend", &tlmSendPing},
+    {"events", &eventsPing, &events},
+    {"tlmSend", &tlmSendPing, &tlmSend},
 #if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-    {"cmdDisp", &cmdDispPing},
+    {"cmdDisp", &cmdDispPing, &cmdDisp},
 #endif
 #if defined(CONFIG_KIT_HEALTH_PINGS_RATE_GROUPS)
-    {"rg1kHz", &rg1kHzPing},
-    {"rg100Hz", &rg100HzPing},
-    {"rg10Hz", &rg10HzPing},
+    {"rg1kHz", &rg1kHzPing, &rg1kHz},
+    {"rg100Hz", &rg100HzPing, &rg100Hz},
+    {"rg10Hz", &rg10HzPing, &rg10Hz},
 #endif
 #if defined(CONFIG_KIT_SERVICE_PARAMS)
-    {"prmDb", &prmDbPing},
+    {"prmDb", &prmDbPing, &prmDb},
 #endif
 #if defined(CONFIG_KIT_SERVICE_FILES)
-    {"fileDownlink", &fileDownlinkPing},
+    {"fileDownlink", &fileDownlinkPing, &fileDownlink},
 #endif
 #if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
-    {"fileUplink", &fileUplinkPing},
+    {"fileUplink", &fileUplinkPing, &fileUplink},
 #endif
 #if defined(CONFIG_KIT_SERVICE_SEQUENCER)
-    {"cmdSeq", &cmdSeqPing},
+    {"cmdSeq", &cmdSeqPing, &cmdSeq},
 #endif
 };
 }  // namespace
@@ -134,6 +135,18 @@ struct QueueOf : Fw::QueuedComponentBase {
 };
 
 }  // namespace
+
+#if defined(CONFIG_KIT_SERVICE_CDH)
+namespace {
+// Each probe watches its pinged component's queue, to defer a ping that
+// would find it full (PingProbe::watchQueue)
+void watchPingedQueues() {
+    for (const PingEntry& entry : PING_ENTRIES) {
+        entry.probe->watchQueue(QueueOf::of(*entry.pinged));
+    }
+}
+}  // namespace
+#endif
 
 QueueUse queueUse(const ActiveInstance& instance) {
     FW_ASSERT(instance.component != nullptr);
@@ -220,6 +233,9 @@ void configureTopology(const TopologyState& state) {
         dividers.dividers[i] = {RATE_GROUPS[i].divisor, RATE_GROUPS[i].offset};
     }
     rateGroupDriver.configure(dividers);
+#if defined(CONFIG_KIT_SERVICE_CDH)
+    watchPingedQueues();
+#endif
     timing.configure(RATE_GROUPS, RATE_GROUP_COUNT, TickClock::cyclesPerSecond() / CONFIG_KIT_TICK_HZ);
 
     // Contexts are unused by the members; a rate group wants one per port

@@ -272,11 +272,11 @@ bool health() {
         const PingProbe& probe = pingProbe(entry);
         const PingRoundTrips& trips = probe.roundTrips();
         answered = answered && trips.count() > 0;
-        printk("KIT PING name=%s pings=%u held=%u p50=%u p99=%u max=%u warn=%u outstanding=%s\n", pingEntryName(entry),
-               static_cast<unsigned>(trips.count()), static_cast<unsigned>(trips.held()),
+        printk("KIT PING name=%s pings=%u held=%u p50=%u p99=%u max=%u warn=%u outstanding=%s deferred=%u\n",
+               pingEntryName(entry), static_cast<unsigned>(trips.count()), static_cast<unsigned>(trips.held()),
                static_cast<unsigned>(trips.percentile(500)), static_cast<unsigned>(trips.percentile(990)),
                static_cast<unsigned>(trips.max()), static_cast<unsigned>(warnCycles),
-               probe.outstanding() ? "yes" : "no");
+               probe.outstanding() ? "yes" : "no", static_cast<unsigned>(probe.deferredPings()));
     }
     const FwEventIdType base = Kit::health.getIdBase();
     const U32 warnings = healthWarnings();

@@ -37,14 +37,75 @@ U32 PingRoundTrips::percentile(U32 permille) const {
     return sorted[(rank == 0 ? 1 : rank) - 1];
 }
 
-PingProbe::PingProbe(const char* const compName)
-    : PingProbeComponentBase(compName), m_sentAt(0), m_outstanding(false), m_trips(), m_segmentMax(0) {}
+PingProbe* PingProbe::s_deferring[PingProbe::MAX_DEFERRED] = {};
+U32 PingProbe::s_deferredCount = 0;
 
-PingProbe::~PingProbe() {}
+PingProbe::PingProbe(const char* const compName)
+    : PingProbeComponentBase(compName),
+      m_targetQueue(nullptr),
+      m_deferred(false),
+      m_deferredKey(0),
+      m_deferredPings(0),
+      m_sentAt(0),
+      m_outstanding(false),
+      m_trips(),
+      m_segmentMax(0) {}
+
+PingProbe::~PingProbe() {
+    for (U32 index = 0; index < s_deferredCount; index++) {
+        if (s_deferring[index] == this) {
+            s_deferredCount--;
+            s_deferring[index] = s_deferring[s_deferredCount];
+            s_deferring[s_deferredCount] = nullptr;
+            break;
+        }
+    }
+}
+
+void PingProbe::watchQueue(const Os::Queue& queue) {
+    m_targetQueue = &queue;
+}
+
+bool PingProbe::targetFull() const {
+    return (m_targetQueue != nullptr) && (m_targetQueue->getMessagesAvailable() >= m_targetQueue->getDepth());
+}
+
+void PingProbe::sendDeferredPings() {
+    U32 index = 0;
+    while (index < s_deferredCount) {  // bounded: each turn moves on or shrinks the list
+        PingProbe* const probe = s_deferring[index];
+        FW_ASSERT(probe != nullptr && probe->m_deferred);
+        if (probe->targetFull()) {
+            index++;
+            continue;
+        }
+        s_deferredCount--;
+        s_deferring[index] = s_deferring[s_deferredCount];
+        s_deferring[s_deferredCount] = nullptr;
+        probe->m_deferred = false;
+        probe->pingOut_out(0, probe->m_deferredKey);
+    }
+}
 
 void PingProbe::pingIn_handler(FwIndexType portNum, U32 key) {
+    sendDeferredPings();
     m_sentAt = TickClock::now();
     m_outstanding = true;
+    if (m_deferred) {
+        // Health pings an entry again only once its answer is in, or after
+        // a restart of the deployment: the newer key replaces the old
+        m_deferredKey = key;
+        return;
+    }
+    if (targetFull()) {
+        FW_ASSERT(s_deferredCount < MAX_DEFERRED, static_cast<FwAssertArgType>(s_deferredCount));
+        s_deferring[s_deferredCount] = this;
+        s_deferredCount++;
+        m_deferred = true;
+        m_deferredKey = key;
+        m_deferredPings++;
+        return;
+    }
     this->pingOut_out(portNum, key);
 }
 

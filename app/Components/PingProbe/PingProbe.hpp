@@ -6,6 +6,7 @@
 #ifndef KIT_PINGPROBE_HPP
 #define KIT_PINGPROBE_HPP
 
+#include <Os/Queue.hpp>
 #include "app/Components/PingProbe/PingProbeComponentAc.hpp"
 
 namespace Kit {
@@ -36,7 +37,27 @@ class PingProbe final : public PingProbeComponentBase {
     explicit PingProbe(const char* const compName);
     ~PingProbe();
 
+    //! The pinged component's message queue: a ping that finds it full is
+    //! deferred, not sent (F´'s generated pingIn asserts on a full queue,
+    //! where its events and commands are dropped or shed: a flood of events
+    //! at the event service had filled it). Without one, pings always go.
+    void watchQueue(const Os::Queue& queue);
+
     const PingRoundTrips& roundTrips() const { return m_trips; }
+    //! Pings deferred so far because the pinged component's queue was full
+    U32 deferredPings() const { return m_deferredPings; }
+    //! A deferred ping is waiting for room
+    bool deferring() const { return m_deferred; }
+
+    //! Every deferred ping whose component's queue has room now, sent on.
+    //! Called at each of health's pings (pingIn), so in health's context
+    //! alone: a deferred ping goes at health's next cycle that finds room;
+    //! the wait counts from health's send, and a component whose queue stays
+    //! full past health's thresholds is late, as F´'s health judges it
+    static void sendDeferredPings();
+
+    //! Deferred pings of every probe (at most one per probe)
+    static U32 deferredNow() { return s_deferredCount; }
     //! A ping went out and has not been answered yet
     bool outstanding() const { return m_outstanding; }
 
@@ -55,7 +76,19 @@ class PingProbe final : public PingProbeComponentBase {
     // Written by health's caller on the way out and by the pinged
     // component's task on the way back, never both at once: health sends
     // the next ping only after it has processed this one's answer
-    U32 m_sentAt;  //!< the counter when the outstanding ping went out
+    //! The pinged component's queue has no room for a ping
+    bool targetFull() const;
+
+    //! The probes holding a deferred ping (health's context only)
+    static constexpr U32 MAX_DEFERRED = 16;
+    static PingProbe* s_deferring[MAX_DEFERRED];
+    static U32 s_deferredCount;
+
+    const Os::Queue* m_targetQueue;  //!< nullptr: a component without a queue
+    bool m_deferred;                 //!< a ping waits for room (its key in m_deferredKey)
+    U32 m_deferredKey;
+    U32 m_deferredPings;  //!< pings deferred so far
+    U32 m_sentAt;         //!< the counter when the outstanding ping went out
     bool m_outstanding;
     PingRoundTrips m_trips;
     U32 m_segmentMax;  //!< the longest round trip since startSegment()

@@ -12,6 +12,16 @@ TEST(PingProbe, ASegmentCountsItsLongestWaitAnsweredOrNot) {
     tester.aSegmentCountsItsLongestWaitAnsweredOrNot();
 }
 
+TEST(PingProbe, APingThatWouldFindTheQueueFullWaitsForRoom) {
+    Kit::PingProbeTester tester;
+    tester.aPingThatWouldFindTheQueueFullWaitsForRoom();
+}
+
+TEST(PingProbe, AProbeGoneLeavesNoDeferredPing) {
+    Kit::PingProbeTester tester;
+    tester.aProbeGoneLeavesNoDeferredPing();
+}
+
 TEST(PingProbe, AnAnswerWithNoPingOutIsPassedOnNotTimed) {
     Kit::PingProbeTester tester;
     tester.anAnswerWithNoPingOutIsPassedOnNotTimed();

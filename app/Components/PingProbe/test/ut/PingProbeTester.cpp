@@ -2,6 +2,8 @@
 
 #include "app/Components/PingProbe/test/ut/PingProbeTester.hpp"
 #include "app/Components/Timing/test/ut/FakeTickClock.hpp"
+#include <Fw/Types/String.hpp>
+#include <Os/Queue.hpp>
 
 namespace Kit {
 
@@ -50,6 +52,62 @@ void PingProbeTester::aSegmentCountsItsLongestWaitAnsweredOrNot() {
     EXPECT_EQ(this->component.segmentWorst(FakeTickClock::now + 5000), 200u);
     // The run's maximum is not the segment's
     EXPECT_EQ(this->component.roundTrips().max(), 600u);
+}
+
+void PingProbeTester::aPingThatWouldFindTheQueueFullWaitsForRoom() {
+    // The pinged component's queue, one message deep and full
+    Os::Queue queue;
+    ASSERT_EQ(queue.create(0, Fw::String("pinged"), 1, sizeof(U32)), Os::Queue::OP_OK);
+    this->component.watchQueue(queue);
+    U32 message = 0;
+    ASSERT_EQ(queue.send(reinterpret_cast<const U8*>(&message), sizeof(message), 0, Os::Queue::NONBLOCKING),
+              Os::Queue::OP_OK);
+    FakeTickClock::now = 100;
+    this->invoke_to_pingIn(0, 9);
+    ASSERT_from_pingOut_SIZE(0);  // F´'s pingIn would have asserted on it
+    EXPECT_TRUE(this->component.deferring());
+    EXPECT_TRUE(this->component.outstanding());
+    EXPECT_EQ(this->component.deferredPings(), 1u);
+    EXPECT_EQ(PingProbe::deferredNow(), 1u);
+    // Health's next cycle, still full: still waiting
+    PingProbe::sendDeferredPings();
+    ASSERT_from_pingOut_SIZE(0);
+    // Room: the ping goes, with health's key
+    FwSizeType size = 0;
+    FwQueuePriorityType priority = 0;
+    ASSERT_EQ(queue.receive(reinterpret_cast<U8*>(&message), sizeof(message), Os::Queue::NONBLOCKING, size, priority),
+              Os::Queue::OP_OK);
+    PingProbe::sendDeferredPings();
+    ASSERT_from_pingOut_SIZE(1);
+    ASSERT_from_pingOut(0, 9);
+    EXPECT_FALSE(this->component.deferring());
+    EXPECT_EQ(PingProbe::deferredNow(), 0u);
+    // The round trip counts from health's send, not from when room came
+    FakeTickClock::now = 900;
+    this->invoke_to_returnIn(0, 9);
+    EXPECT_EQ(this->component.roundTrips().max(), 800u);
+    // With room, a ping goes at once
+    this->invoke_to_pingIn(0, 10);
+    ASSERT_from_pingOut_SIZE(2);
+    EXPECT_EQ(this->component.deferredPings(), 1u);
+    queue.teardown();  // F´'s generic queue frees its store here, not in its destructor
+}
+
+void PingProbeTester::aProbeGoneLeavesNoDeferredPing() {
+    Os::Queue queue;
+    ASSERT_EQ(queue.create(0, Fw::String("pinged"), 1, sizeof(U32)), Os::Queue::OP_OK);
+    U32 message = 0;
+    ASSERT_EQ(queue.send(reinterpret_cast<const U8*>(&message), sizeof(message), 0, Os::Queue::NONBLOCKING),
+              Os::Queue::OP_OK);
+    {
+        PingProbe other("other");
+        other.init(0);
+        other.watchQueue(queue);
+        other.pingIn_handlerBase(0, 3);
+        EXPECT_EQ(PingProbe::deferredNow(), 1u);
+    }
+    EXPECT_EQ(PingProbe::deferredNow(), 0u);
+    queue.teardown();
 }
 
 void PingProbeTester::anAnswerWithNoPingOutIsPassedOnNotTimed() {

@@ -17,6 +17,8 @@ class PingProbeTester : public PingProbeGTestBase {
 
     void pingsPassThroughAndAreTimed();
     void aSegmentCountsItsLongestWaitAnsweredOrNot();
+    void aPingThatWouldFindTheQueueFullWaitsForRoom();
+    void aProbeGoneLeavesNoDeferredPing();
     void anAnswerWithNoPingOutIsPassedOnNotTimed();
     void percentilesComeFromTheLastWindow();
 
