@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 
 #include "app/Components/PingProbe/test/ut/PingProbeTester.hpp"
-#include "app/Components/Timing/test/ut/FakeTickClock.hpp"
 #include <Fw/Types/String.hpp>
 #include <Os/Queue.hpp>
+#include "app/Components/Timing/test/ut/FakeTickClock.hpp"
 
 namespace Kit {
 
