@@ -13,6 +13,7 @@ fails every test with one message."""
 from typing import Any
 
 import pytest
+from fprime_gds.common.history.test import TestHistory
 
 UPLINK_TRIES = 5
 # Far above a NO_OP's round trip (well under a second on either board), so
@@ -20,9 +21,31 @@ UPLINK_TRIES = 5
 ANSWER_S = 5
 
 
+def keep_receive_order(api: Any) -> None:
+    """The test API's histories in the order the ground received them.
+    fprime-gds keeps them in flight-software time order (fsw_order), but the
+    deployment's time starts at zero at every boot, a warm restart's too: a
+    command sent after a restart, its answer stamped 0.2 s, was sorted in
+    before the last boot's answers (11.8 s), and the API's search from
+    "now" found an answer of the last boot instead of its own (CI: the
+    parameter tests after a warm restart). One boot at a time, receive
+    order is time order."""
+    coders = api.pipeline.coders
+    for kind, register, remove in (
+            ("command_history", coders.register_command_consumer, coders.remove_command_consumer),
+            ("event_history", coders.register_event_consumer, coders.remove_event_consumer),
+            ("telemetry_history", coders.register_channel_consumer, coders.remove_channel_consumer)):
+        remove(getattr(api, kind))
+        history = TestHistory()
+        register(history)
+        setattr(api, kind, history)
+    api.fsw_ordered = False
+
+
 @pytest.fixture(scope="session", autouse=True)
 def uplink_proven(fprime_test_api_session: Any) -> None:
     api = fprime_test_api_session
+    keep_receive_order(api)
     for _ in range(UPLINK_TRIES):
         if api.send_and_await_event("Kit.cmdDisp.CMD_NO_OP", events="Kit.cmdDisp.NoOpReceived",
                                     timeout=ANSWER_S) is not None:
