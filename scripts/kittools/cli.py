@@ -54,6 +54,9 @@ def parser() -> argparse.ArgumentParser:
     t.add_argument("--quick", action="store_true",
                    help=f"the short run: every model (or --model's) on {REFERENCE_BOARD}, nominal, faults and "
                         "load, a NO_OP through fprime-gds per model, host and tooling tests; no budget")
+    t.add_argument("--full", action="store_true",
+                   help="also what CI's run leaves out: the real boards' builds of each baremetal policy "
+                        "(tests/boards, tag 'full') and the porting check's rtos build of its real board")
     t.add_argument("--subset", metavar="K/N",
                    help="this machine's share K of a full run split across N (twister's --subset); join the "
                         "shards' --output folders with kit report --merge")

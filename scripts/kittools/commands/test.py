@@ -100,7 +100,8 @@ class FullRun:
 
     def twister(self) -> Tally:
         return twister.run_twister(self.boards + self.small + self.built_only, self.log_dir,
-                                   subset=self.args.subset)
+                                   subset=self.args.subset,
+                                   exclude_tags=() if self.args.full else (twister.FULL_RUN_TAG,))
 
     def start_size_reports(self) -> None:
         """Once, from the first step that reads twister's runs (the
@@ -197,7 +198,7 @@ class FullRun:
         if not args.skip_twister and not args.skip_porting and not args.board and first:
             steps.add_host(f"porting: a new QEMU board and a console-only real board scaffolded into a scratch "
                            f"copy ({', '.join(porting.PORTING_MODELS)})",
-                           functools.partial(porting.run_porting_check, self.log_dir))
+                           functools.partial(porting.run_porting_check, self.log_dir, args.full))
         return steps
 
 
@@ -207,9 +208,9 @@ def quick_plan(args: argparse.Namespace) -> Plan:
     model answering a NO_OP; beside them, the host and tooling tests. No
     kernel floor, soak, determinism, fuzzing, serial sweep, porting or
     budget: those are the full run's."""
-    if args.board or args.subset or args.update_baseline:
-        raise KitError("--quick is the reference board's short run: without --board, --subset or "
-                       "--update-baseline (those are the full run's)")
+    if args.board or args.subset or args.update_baseline or args.full:
+        raise KitError("--quick is the reference board's short run: without --board, --subset, --full or "
+                       "--update-baseline")
     check_provisioned()
     log_dir = Path(args.output).resolve()
     models = tuple(args.model or variants.names())

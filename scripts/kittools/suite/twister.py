@@ -158,6 +158,10 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     return tally
 
 
+#: The twister tag of the builds only the full run makes (kit test --full):
+#: the real boards' builds of a baremetal policy, whose port is the model's
+FULL_RUN_TAG = "full"
+
 #: In a twister outdir: what the last clean run configured its builds from
 CONFIGURED_FROM = "kit-configured-from.sha256"
 #: The environment a build's configuration depends on beyond its files (the toolchain)
