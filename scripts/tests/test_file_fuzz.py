@@ -7,6 +7,7 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
+import pytest
 from fprime_gds.common.files.helpers import CFDPChecksum
 
 from kittools.build.folder import CONFIG, KCONFIG_STAMP, BuildFolder
@@ -69,6 +70,24 @@ def test_generated_packets_agree_with_the_model():
         assert model.packets - before[0] == (0 if decoded else 1)
         if kind == "start_bad_destination":
             assert not packet.endswith(bytes([len(SCRATCH)]) + SCRATCH.encode())
+
+
+@pytest.mark.parametrize("opened", [False, True])
+def test_the_read_out_writes_every_count_again(opened: bool):
+    """Each count FileUplink sends on change moves during the read-out,
+    whether the fuzzing left a file open or not: the ground's last sample
+    of each is then one written after the downlink drained."""
+    rng = random.Random(3)
+    model = FileUplinkModel()
+    if opened:
+        model.start(8, opens=True)
+        model.data(1, 0, b"ab")
+    before = (model.packets, model.warnings, model.files)
+    for kind in file_fuzz.READ_OUT:
+        file_fuzz.file_packet(kind, rng, model, SCRATCH)
+    after = (model.packets, model.warnings, model.files)
+    assert all(now > then for now, then in zip(after, before, strict=True))
+    assert not model.receiving and model.decode_errors == 0
 
 
 def test_a_build_configured_under_other_kconfig_defaults_drops_its_config(tmp_path: Path):

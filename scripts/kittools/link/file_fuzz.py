@@ -46,7 +46,17 @@ from kittools.link.client import (
     command,
     frame,
 )
-from kittools.link.fuzz import MISSED_ANSWERS_MAX, NOOP_EVENT, PADDING, REPLY_TIMEOUT_S, SETTLE_S, answered
+from kittools.link.fuzz import (
+    DOWNLINK_OVERFLOW_EVENT,
+    HEARTBEAT_CHANNEL,
+    MISSED_ANSWERS_MAX,
+    NOOP_EVENT,
+    PADDING,
+    REPLY_TIMEOUT_S,
+    SETTLE_S,
+    after_boot_burst,
+    answered,
+)
 from kittools.workspace import KitError
 
 START_FIELDS = struct.Struct(">I")  # file size; then the two length-prefixed paths
@@ -78,7 +88,6 @@ DECODE_ERROR_EVENT = "Kit.fileUplink.DecodeError"
 # Where a file packet is lost before FileUplink sees it: the link's buffers ran out
 BUFFER_EVENTS = ("Kit.router.AllocationError", "Kit.frameAccumulator.NoBufferAvailable",
                  "Kit.linkBuffers.NoBuffsAvailable")
-HEARTBEAT_CHANNEL = "Kit.linkHealth.FramesDetected"
 
 
 def cfdp_checksum(data: bytes, offset: int, start: int = 0) -> int:
@@ -256,6 +265,9 @@ class Outcome:
                 "counted": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())}
                 | {"fileUplink.DecodeError events": self.events[DECODE_ERROR_EVENT]},
                 "buffer_events": {name.removeprefix("Kit."): self.events[name] for name in BUFFER_EVENTS},
+                # every event that came down: a count that differs from the model names its cause here
+                "events": {name.removeprefix("Kit."): count for name, count in sorted(self.events.items())},
+                "downlink_overflows": self.events[DOWNLINK_OVERFLOW_EVENT],
                 "halt": self.halt, "missed": self.missed, "failures": self.failures()}
 
 
@@ -275,6 +287,26 @@ def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:
         raise KitError(f"{dictionary} lacks {missing}: is it this kit's dictionary?") from None
 
 
+# FileUplink writes its counts (telemetry) when they change, and TlmChan
+# sends a channel once per write: a write lost where the downlink's
+# telemetry queue overflows under the fuzzer's bursts (ComQueue's
+# QueueOverflow events) leaves the ground an old count for good (a
+# fresh-clone run read FilesReceived 168 while 169 FileReceived events came
+# down). After the downlink has drained, these packets write each count once
+# more: a cancel (no file open after it), an end with no file open
+# (Warnings), then a file of no bytes (FilesReceived), PacketsReceived with
+# each. The model counts them as it counts every packet.
+READ_OUT = ("cancel", "end_good", "start", "end_good")
+
+
+def _settle(link: Downlink, seed: int) -> None:
+    """Wait, by the deployment's own time tags, for a telemetry sample taken
+    SETTLE_S after the last NO_OP's answer (kittools.link.fuzz.run says why)."""
+    settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
+    if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
+        raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
+
+
 def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
         halted: Callable[[], str] = lambda: "") -> Outcome:
     """Send file packets until `invalid_packets` of them are ones FileUplink
@@ -287,6 +319,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
     noop = frame(command(noop_opcode))
     link = Downlink(socket_path, dictionary)
     try:
+        after_boot_burst(link, seed)
         while outcome.invalid_sent < invalid_packets and not outcome.halt:
             batch = b""
             for _ in range(PER_BATCH):
@@ -304,15 +337,20 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
                 outcome.missed.append(outcome.noops_sent)
                 if len(outcome.missed) >= MISSED_ANSWERS_MAX:
                     break
+        if not outcome.halt and not outcome.missed:
+            # The downlink drained, then FileUplink's counts written once more
+            _settle(link, seed)
+            batch = b"".join(frame(file_packet(kind, rng, model, scratch)) for kind in READ_OUT)
+            link.send(batch + noop + PADDING)
+            outcome.noops_sent += 1
+            if not link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S):
+                outcome.missed.append(outcome.noops_sent)
+            outcome.halt = halted()
         outcome.noops_answered = link.events[NOOP_EVENT]
         outcome.events = link.events
         if outcome.halt:
             return outcome
-        # FileUplink's counts after the last batch, by the deployment's own
-        # time tags (kittools.link.fuzz.run says why)
-        settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
-        if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
-            raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
+        _settle(link, seed)
         outcome.events = link.events
         outcome.telemetry = {name: int(link.telemetry[name]) for name in COUNT_CHANNELS if name in link.telemetry}
     finally:
