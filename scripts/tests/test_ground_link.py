@@ -87,6 +87,22 @@ def test_outcome_names_every_shortfall():
     assert outcome.to_json()["seed"] == 1
 
 
+def test_the_read_out_command_is_one_more_bad_command_and_one_more_frame():
+    """The unknown opcode sent after the fuzzing to write the dispatcher's
+    counts again is expected in them: without it counted, a deployment
+    that refused it would fail, and one that took it would pass."""
+    outcome = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1, read_out_commands=1)
+    outcome.events["Kit.cmdDisp.OpCodeError"] = 1
+    outcome.telemetry = {"Kit.linkHealth.FramesDetected": 2, "Kit.linkHealth.Oversized": 0,
+                         "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 1,
+                         "Kit.linkHealth.CommandsDropped": 0, "Kit.linkHealth.UartRingDrops": 0,
+                         "Kit.linkHealth.UartBytesReceived": 0}
+    assert outcome.failures() == []
+    outcome.telemetry["Kit.cmdDisp.CommandErrors"] = 0
+    assert outcome.failures() == ["cmdDisp.CommandErrors: 0, expected 1"]
+    assert fuzz.unknown_opcode(random.Random(5), DEPLOYMENT) not in DEPLOYMENT.opcodes
+
+
 def test_bad_commands_count_from_the_dispatchers_events_in_either_form():
     healthy = {"Kit.linkHealth.FramesDetected": 3, "Kit.linkHealth.Oversized": 0,
                "Kit.linkHealth.UnknownPackets": 0, "Kit.linkHealth.CommandsDropped": 0,

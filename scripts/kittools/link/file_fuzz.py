@@ -48,14 +48,13 @@ from kittools.link.client import (
 )
 from kittools.link.fuzz import (
     DOWNLINK_OVERFLOW_EVENT,
-    HEARTBEAT_CHANNEL,
     MISSED_ANSWERS_MAX,
     NOOP_EVENT,
     PADDING,
     REPLY_TIMEOUT_S,
-    SETTLE_S,
     after_boot_burst,
     answered,
+    settle,
 )
 from kittools.workspace import KitError
 
@@ -299,14 +298,6 @@ def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:
 READ_OUT = ("cancel", "end_good", "start", "end_good")
 
 
-def _settle(link: Downlink, seed: int) -> None:
-    """Wait, by the deployment's own time tags, for a telemetry sample taken
-    SETTLE_S after the last NO_OP's answer (kittools.link.fuzz.run says why)."""
-    settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
-    if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
-        raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
-
-
 def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
         halted: Callable[[], str] = lambda: "") -> Outcome:
     """Send file packets until `invalid_packets` of them are ones FileUplink
@@ -339,7 +330,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
                     break
         if not outcome.halt and not outcome.missed:
             # The downlink drained, then FileUplink's counts written once more
-            _settle(link, seed)
+            settle(link, seed)
             batch = b"".join(frame(file_packet(kind, rng, model, scratch)) for kind in READ_OUT)
             link.send(batch + noop + PADDING)
             outcome.noops_sent += 1
@@ -350,7 +341,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
         outcome.events = link.events
         if outcome.halt:
             return outcome
-        _settle(link, seed)
+        settle(link, seed)
         outcome.events = link.events
         outcome.telemetry = {name: int(link.telemetry[name]) for name in COUNT_CHANNELS if name in link.telemetry}
     finally:

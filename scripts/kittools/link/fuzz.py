@@ -82,6 +82,14 @@ class Deployment:
             raise KitError(f"{path} lacks {missing}: is it this kit's dictionary?") from None
 
 
+def unknown_opcode(rng: random.Random, deployment: Deployment) -> int:
+    """An opcode the deployment's dictionary does not have."""
+    while True:
+        opcode = rng.getrandbits(32)
+        if opcode not in deployment.opcodes:
+            return opcode
+
+
 def invalid_frame(kind: str, rng: random.Random, deployment: Deployment) -> bytes:
     """One invalid frame of a kind, from the seeded generator."""
     def short_frame() -> bytes:
@@ -116,10 +124,7 @@ def invalid_frame(kind: str, rng: random.Random, deployment: Deployment) -> byte
         descriptor = rng.choice([FW_PACKET_TELEM, FW_PACKET_LOG, rng.randint(4, 0xFFFF)])
         return frame(DESCRIPTOR.pack(descriptor) + rng.randbytes(rng.randint(0, 16)))
     if kind == "bad_opcode":
-        while True:
-            opcode = rng.getrandbits(32)
-            if opcode not in deployment.opcodes:
-                return frame(command(opcode, rng.randbytes(rng.randint(0, 8))))
+        return frame(command(unknown_opcode(rng, deployment), rng.randbytes(rng.randint(0, 8))))
     if kind == "bad_arguments":
         # SET_SETPOINT takes an I32; fewer bytes cannot be deserialized
         return frame(command(deployment.setpoint, rng.randbytes(rng.randint(0, 3))))
@@ -142,6 +147,8 @@ class Outcome:
     missed: list[int] = field(default_factory=list)
     #: The dispatcher's form counts errors in telemetry (Deployment.dispatcher_telemetry)
     dispatcher_telemetry: bool = True
+    #: Unknown opcodes sent after the fuzzing to write the dispatcher's counts again
+    read_out_commands: int = 0
 
     @property
     def invalid_sent(self) -> int:
@@ -149,8 +156,8 @@ class Outcome:
 
     def failures(self) -> list[str]:
         found = []
-        framed = self.noops_sent + sum(self.sent[kind] for kind in FRAMED_KINDS)
-        bad_commands = self.sent["bad_opcode"] + self.sent["bad_arguments"]
+        framed = self.noops_sent + self.read_out_commands + sum(self.sent[kind] for kind in FRAMED_KINDS)
+        bad_commands = self.sent["bad_opcode"] + self.sent["bad_arguments"] + self.read_out_commands
         checks = [
             ("NO_OPs answered", self.noops_answered, self.noops_sent),
             ("LinkHealth.FramesDetected (valid frames)", self.telemetry.get("Kit.linkHealth.FramesDetected"), framed),
@@ -184,7 +191,8 @@ class Outcome:
 
     def to_json(self) -> dict[str, Any]:
         return {"seed": self.seed, "invalid_sent": self.invalid_sent, "sent": dict(sorted(self.sent.items())),
-                "noops_sent": self.noops_sent, "noops_answered": self.noops_answered, "bytes_sent": self.bytes_sent,
+                "noops_sent": self.noops_sent, "read_out_commands": self.read_out_commands,
+                "noops_answered": self.noops_answered, "bytes_sent": self.bytes_sent,
                 "rejected": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())},
                 "events": dict(sorted(self.events.items())),
                 "downlink_overflows": self.events[DOWNLINK_OVERFLOW_EVENT], "halt": self.halt, "missed": self.missed,
@@ -225,6 +233,14 @@ def answered(link: Downlink, noops: int) -> bool:
 BOOT_SETTLE_S = 1.0
 # Where ComQueue says it dropped a downlink buffer (its argument: which queue)
 DOWNLINK_OVERFLOW_EVENT = "Kit.comQueue.QueueOverflow"
+
+
+def settle(link: Downlink, seed: int) -> None:
+    """Wait, by the deployment's own time tags, for a telemetry sample taken
+    SETTLE_S after the last NO_OP's answer."""
+    settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
+    if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
+        raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
 
 
 def after_boot_burst(link: Downlink, seed: int) -> None:
@@ -293,13 +309,22 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
         # every byte before it was processed. Telemetry waits behind events
         # in the downlink queue, so samples arriving after that answer can
         # be older than it: wait, by the deployment's own time tags, for a
-        # LinkHealth sample taken SETTLE_S after it. The (active)
-        # dispatcher's channels are sent on change only; their final values
-        # (written by its 10 Hz call after the last command) were queued
-        # before that.
-        settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
-        if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
-            raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
+        # LinkHealth sample taken SETTLE_S after it (settle). The
+        # dispatcher's channels are sent on change only, and a write lost
+        # where the downlink's telemetry queue overflowed would leave the
+        # ground an old count: once the downlink has drained, one more
+        # unknown opcode and a NO_OP write both again (READ_OUT_COMMANDS).
+        settle(link, seed)
+        if not outcome.missed and deployment.dispatcher_telemetry:
+            read_out = frame(command(unknown_opcode(rng, deployment)))
+            link.send(read_out + noop + PADDING)
+            outcome.bytes_sent += len(read_out) + len(noop) + len(PADDING)
+            outcome.noops_sent += 1
+            outcome.read_out_commands += 1
+            if not link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S):
+                outcome.missed.append(outcome.noops_sent)
+            outcome.halt = halted()
+            settle(link, seed)
         outcome.noops_answered = link.events[NOOP_EVENT]
         outcome.events = link.events
         outcome.telemetry = {name: int(link.telemetry[name]) for name in COUNT_CHANNELS if name in link.telemetry}
