@@ -11,6 +11,7 @@ import pytest
 from kittools import cli, workspace
 from kittools.build import runner
 from kittools.commands import test as test_command
+from kittools.link import serial_points
 from kittools.suite import plan, platforms
 from kittools.workspace import KitError
 
@@ -183,3 +184,11 @@ def test_the_tiers_bad_input_is_one_clear_error(arguments, message, capsys):
     assert cli.main(arguments) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and message in err[0]
+
+
+def test_ci_plays_each_serial_level_once_and_the_full_and_baseline_runs_play_it_for_a_spread():
+    """The serial sweep runs in real time: its plays are CI's time."""
+    parser = cli.parser()
+    assert test_command.serial_plays(parser.parse_args(["test"])) == 1
+    for tier in (["--full"], ["--update-baseline"]):
+        assert test_command.serial_plays(parser.parse_args(["test", *tier])) == serial_points.REPEATS > 1, tier

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from kittools import variants
 from kittools.boards.scaffold import REFERENCE_BOARD
+from kittools.link import serial_points
 from kittools.suite import (
     budget,
     determinism,
@@ -49,6 +50,13 @@ def subset_of(text: str | None) -> tuple[int, int] | None:
         raise KitError(f"--subset {text}: expected K/N with 1 <= K <= N (this machine's share K of N, as "
                        "twister's --subset takes it), e.g. --subset 1/2 and --subset 2/2 on two machines")
     return k, n
+
+
+def serial_plays(args: argparse.Namespace) -> int:
+    """Plays of each serial-load level: once in CI's run, as often as the
+    report's median and spread want in the full run and in the run that
+    writes a baseline (which keeps the serial axes as the full run plays them)."""
+    return serial_points.REPEATS if args.full or args.update_baseline else ground_checks.SERIAL_PLAYS_CI
 
 
 def run(args: argparse.Namespace) -> int:
@@ -120,7 +128,8 @@ class FullRun:
     def ground(self) -> Tally:
         self.start_size_reports()
         self.steps.host_done.wait()
-        return ground_checks.run_integration(self.log_dir, required=not self.subset)
+        return ground_checks.run_integration(self.log_dir, required=not self.subset,
+                                             serial_plays=serial_plays(self.args))
 
     def budget(self, board: str) -> Tally:
         self.size_reports.result()
