@@ -8,6 +8,7 @@ from __future__ import annotations
 import random
 import socket
 import threading
+from collections import Counter
 from pathlib import Path
 
 import pytest
@@ -101,6 +102,41 @@ def test_the_read_out_command_is_one_more_bad_command_and_one_more_frame():
     outcome.telemetry["Kit.cmdDisp.CommandErrors"] = 0
     assert outcome.failures() == ["cmdDisp.CommandErrors: 0, expected 1"]
     assert fuzz.unknown_opcode(random.Random(5), DEPLOYMENT) not in DEPLOYMENT.opcodes
+
+
+class _OverflowingLink:
+    """A downlink whose first `overflowing` read-outs each see one more
+    ComQueue overflow; settle() finds its heartbeat at once."""
+
+    def __init__(self, overflowing: int) -> None:
+        self.events: Counter[str] = Counter()
+        self.overflowing = overflowing
+
+    def played(self) -> bool:
+        if self.overflowing > 0:
+            self.overflowing -= 1
+            self.events[fuzz.DOWNLINK_OVERFLOW_EVENT] += 1
+        return True
+
+
+@pytest.mark.parametrize("overflowing, played", [(0, 1), (1, 2), (2, 3), (5, fuzz.READ_OUTS_MAX)])
+def test_a_read_out_the_downlink_overflowed_during_is_played_again_a_bounded_number_of_times(
+        monkeypatch, overflowing, played):
+    monkeypatch.setattr(fuzz, "settle", lambda link, seed: None)
+    link = _OverflowingLink(overflowing)
+    plays = []
+
+    def play() -> bool:
+        plays.append(1)
+        return link.played()
+
+    assert fuzz.read_out(link, play, seed=1) == played == len(plays)  # type: ignore[arg-type]
+
+
+def test_a_read_out_whose_no_op_went_unanswered_is_not_played_again(monkeypatch):
+    monkeypatch.setattr(fuzz, "settle", lambda link, seed: pytest.fail("settled after a missed answer"))
+    link = _OverflowingLink(5)
+    assert fuzz.read_out(link, lambda: False, seed=1) == 1  # type: ignore[arg-type]
 
 
 def test_bad_commands_count_from_the_dispatchers_events_in_either_form():

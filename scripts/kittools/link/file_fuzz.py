@@ -54,6 +54,7 @@ from kittools.link.fuzz import (
     REPLY_TIMEOUT_S,
     after_boot_burst,
     answered,
+    read_out,
     settle,
 )
 from kittools.workspace import KitError
@@ -234,6 +235,8 @@ class Outcome:
     telemetry: dict[str, int] = field(default_factory=dict)
     halt: str = ""
     missed: list[int] = field(default_factory=list)
+    #: READ_OUT batches played at the end (fuzz.read_out)
+    read_outs: int = 0
 
     def failures(self) -> list[str]:
         found = []
@@ -258,7 +261,7 @@ class Outcome:
     def to_json(self) -> dict[str, Any]:
         model = self.model
         return {"seed": self.seed, "invalid_sent": self.invalid_sent, "sent": dict(sorted(self.sent.items())),
-                "noops_sent": self.noops_sent, "noops_answered": self.noops_answered,
+                "noops_sent": self.noops_sent, "noops_answered": self.noops_answered, "read_outs": self.read_outs,
                 "expected": {"packets": model.packets, "warnings": model.warnings, "files": model.files,
                              "decode_errors": model.decode_errors},
                 "counted": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())}
@@ -330,18 +333,26 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
                     break
         if not outcome.halt and not outcome.missed:
             # The downlink drained, then FileUplink's counts written once more
+
+            def play() -> bool:
+                batch = b"".join(frame(file_packet(kind, rng, model, scratch)) for kind in READ_OUT)
+                link.send(batch + noop + PADDING)
+                outcome.noops_sent += 1
+                outcome.read_outs += 1
+                replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
+                if not replied:
+                    outcome.missed.append(outcome.noops_sent)
+                outcome.halt = halted()
+                return replied and not outcome.halt
+
             settle(link, seed)
-            batch = b"".join(frame(file_packet(kind, rng, model, scratch)) for kind in READ_OUT)
-            link.send(batch + noop + PADDING)
-            outcome.noops_sent += 1
-            if not link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S):
-                outcome.missed.append(outcome.noops_sent)
-            outcome.halt = halted()
+            read_out(link, play, seed)
         outcome.noops_answered = link.events[NOOP_EVENT]
         outcome.events = link.events
         if outcome.halt:
             return outcome
-        settle(link, seed)
+        if outcome.missed:
+            settle(link, seed)
         outcome.events = link.events
         outcome.telemetry = {name: int(link.telemetry[name]) for name in COUNT_CHANNELS if name in link.telemetry}
     finally:
