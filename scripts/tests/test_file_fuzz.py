@@ -103,3 +103,20 @@ def test_a_build_configured_under_other_kconfig_defaults_drops_its_config(tmp_pa
     (tmp_path / KCONFIG_STAMP).unlink()
     folder.take_kconfig_defaults("today")  # a folder from before the stamp
     assert not (tmp_path / CONFIG).exists()
+
+
+def test_files_count_from_events_only_where_every_read_out_overflowed_the_downlink():
+    """FilesReceived is the check, unless the last read-out's writes may not
+    have come down; then the FileReceived events (one with each count) are,
+    and a count that differs from the model fails either way."""
+    outcome = file_fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1)
+    outcome.model.files = 3
+    outcome.telemetry = {"Kit.fileUplink.PacketsReceived": 0, "Kit.fileUplink.Warnings": 0,
+                         "Kit.fileUplink.FilesReceived": 2, "Kit.linkHealth.UartRingDrops": 0}
+    outcome.events[file_fuzz.FILE_RECEIVED_EVENT] = 3
+    assert outcome.failures() == ["FileUplink.FilesReceived: 2, expected 3"]
+    outcome.read_out_overflowed = True
+    assert outcome.failures() == []
+    outcome.events[file_fuzz.FILE_RECEIVED_EVENT] = 4
+    assert outcome.failures() == ["FileUplink's FileReceived events: 4, expected 3"]
+    assert outcome.to_json()["read_out_overflowed"] is True

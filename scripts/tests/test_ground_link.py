@@ -130,13 +130,15 @@ def test_a_read_out_the_downlink_overflowed_during_is_played_again_a_bounded_num
         plays.append(1)
         return link.played()
 
-    assert fuzz.read_out(link, play, seed=1) == played == len(plays)  # type: ignore[arg-type]
+    ended = fuzz.read_out(link, play, seed=1)  # type: ignore[arg-type]
+    assert ended.played == played == len(plays)
+    assert ended.overflowed == (overflowing >= fuzz.READ_OUTS_MAX)
 
 
 def test_a_read_out_whose_no_op_went_unanswered_is_not_played_again(monkeypatch):
     monkeypatch.setattr(fuzz, "settle", lambda link, seed: pytest.fail("settled after a missed answer"))
     link = _OverflowingLink(5)
-    assert fuzz.read_out(link, lambda: False, seed=1) == 1  # type: ignore[arg-type]
+    assert fuzz.read_out(link, lambda: False, seed=1) == fuzz.ReadOut(1, overflowed=False)  # type: ignore[arg-type]
 
 
 def test_bad_commands_count_from_the_dispatchers_events_in_either_form():

@@ -253,19 +253,26 @@ def settle(link: Downlink, seed: int) -> None:
 READ_OUTS_MAX = 3
 
 
-def read_out(link: Downlink, play: Callable[[], bool], seed: int) -> int:
+@dataclass(frozen=True)
+class ReadOut:
+    played: int
+    #: The downlink overflowed during the last one too: a count written in
+    #: it may not have come down
+    overflowed: bool
+
+
+def read_out(link: Downlink, play: Callable[[], bool], seed: int) -> ReadOut:
     """Play one read-out (`play`: its packets and a NO_OP; False where the
     NO_OP went unanswered or the deployment halted), then settle; again
-    while the downlink overflowed during it (READ_OUTS_MAX in all). How
-    many were played."""
+    while the downlink overflowed during it (READ_OUTS_MAX in all)."""
     for played in range(1, READ_OUTS_MAX + 1):
         overflows = link.events[DOWNLINK_OVERFLOW_EVENT]
         if not play():
-            return played
+            return ReadOut(played, overflowed=False)
         settle(link, seed)
         if link.events[DOWNLINK_OVERFLOW_EVENT] == overflows:
-            return played
-    return READ_OUTS_MAX
+            return ReadOut(played, overflowed=False)
+    return ReadOut(READ_OUTS_MAX, overflowed=True)
 
 
 def after_boot_burst(link: Downlink, seed: int) -> None:
