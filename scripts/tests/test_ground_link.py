@@ -159,6 +159,11 @@ def test_bad_commands_count_from_the_dispatchers_events_in_either_form():
     active.telemetry = dict(healthy)
     active.events.update({"Kit.cmdDisp.InvalidCommand": 1, "Kit.cmdDisp.OpCodeError": 1})
     assert active.failures() == ["cmdDisp.CommandErrors: None, expected 2"]
+    # ... unless every read-out overflowed the downlink: then its events alone count
+    active.read_out_overflowed = True
+    assert active.failures() == []
+    active.events["Kit.cmdDisp.OpCodeError"] = 0
+    assert [f for f in active.failures() if "refusal events" in f]
 
 
 def test_adapter_reconnects_and_never_raises(tmp_path: Path):
