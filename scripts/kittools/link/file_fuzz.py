@@ -23,7 +23,6 @@ warnings, files received (telemetry) and decode errors (events).
 
 from __future__ import annotations
 
-import functools
 import json
 import random
 import struct
@@ -50,11 +49,10 @@ from kittools.link.fuzz import (
     DOWNLINK_OVERFLOW_EVENT,
     MISSED_ANSWERS_MAX,
     NOOP_EVENT,
-    PADDING,
     REPLY_TIMEOUT_S,
     after_boot_burst,
-    answered,
     read_out,
+    send_closed_by_noop,
     settle,
 )
 from kittools.workspace import KitError
@@ -340,27 +338,16 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
                 outcome.sent[kind] += 1
                 if (model.warnings, model.decode_errors) != before:
                     outcome.invalid_sent += 1
-            link.send(batch + noop + PADDING)
-            outcome.noops_sent += 1
-            replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
-            outcome.halt = halted()
-            if not replied:
-                outcome.missed.append(outcome.noops_sent)
-                if len(outcome.missed) >= MISSED_ANSWERS_MAX:
-                    break
+            send_closed_by_noop(link, batch, noop, outcome, halted)
+            if len(outcome.missed) >= MISSED_ANSWERS_MAX:
+                break
         if not outcome.halt and not outcome.missed:
             # The downlink drained, then FileUplink's counts written once more
 
             def play() -> bool:
-                batch = b"".join(frame(file_packet(kind, rng, model, scratch)) for kind in READ_OUT)
-                link.send(batch + noop + PADDING)
-                outcome.noops_sent += 1
                 outcome.read_outs += 1
-                replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
-                if not replied:
-                    outcome.missed.append(outcome.noops_sent)
-                outcome.halt = halted()
-                return replied and not outcome.halt
+                batch = b"".join(frame(file_packet(kind, rng, model, scratch)) for kind in READ_OUT)
+                return send_closed_by_noop(link, batch, noop, outcome, halted)
 
             settle(link, seed)
             ended = read_out(link, play, seed)

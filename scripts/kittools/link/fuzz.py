@@ -29,7 +29,7 @@ from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 from kittools.link.client import (
     DESCRIPTOR,
@@ -259,6 +259,28 @@ def settle(link: Downlink, seed: int) -> None:
 READ_OUTS_MAX = 3
 
 
+class NoopClosed(Protocol):
+    """What a fuzzer's outcome keeps of the NO_OPs closing its batches."""
+
+    noops_sent: int
+    missed: list[int]
+    halt: str
+
+
+def send_closed_by_noop(link: Downlink, batch: bytes, noop: bytes, outcome: NoopClosed,
+                        halted: Callable[[], str]) -> bool:
+    """Send `batch` closed by a NO_OP and wait for its answer: the NO_OP is
+    counted, an answer missed within REPLY_TIMEOUT_S is recorded, and
+    `halted` is asked. Whether it was answered with the deployment running."""
+    link.send(batch + noop + PADDING)
+    outcome.noops_sent += 1
+    replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
+    if not replied:
+        outcome.missed.append(outcome.noops_sent)
+    outcome.halt = halted()
+    return replied and not outcome.halt
+
+
 @dataclass(frozen=True)
 class ReadOut:
     played: int
@@ -327,18 +349,12 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
                 assert len(invalid) <= INVALID_FRAME_MAX, f"{kind}: {len(invalid)} bytes"
                 batch += invalid
                 outcome.sent[kind] += 1
-            link.send(batch + noop + PADDING)
             outcome.bytes_sent += len(batch) + len(noop) + len(PADDING)
-            outcome.noops_sent += 1
-            replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
-            outcome.halt = halted()
-            if not replied:
-                # A missed answer fails the run (Outcome.failures); go on,
-                # since the next batch's bytes may free what holds it up,
-                # but not forever
-                outcome.missed.append(outcome.noops_sent)
-                if len(outcome.missed) >= MISSED_ANSWERS_MAX:
-                    break
+            # A missed answer fails the run (Outcome.failures); go on, since
+            # the next batch's bytes may free what holds it up, but not forever
+            send_closed_by_noop(link, batch, noop, outcome, halted)
+            if len(outcome.missed) >= MISSED_ANSWERS_MAX:
+                break
         if outcome.halt:
             outcome.noops_answered = link.events[NOOP_EVENT]
             outcome.events = link.events
@@ -357,15 +373,9 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
 
             def play() -> bool:
                 bad = frame(command(unknown_opcode(rng, deployment)))
-                link.send(bad + noop + PADDING)
                 outcome.bytes_sent += len(bad) + len(noop) + len(PADDING)
-                outcome.noops_sent += 1
                 outcome.read_out_commands += 1
-                replied = link.pump(functools.partial(answered, link, outcome.noops_sent), REPLY_TIMEOUT_S)
-                if not replied:
-                    outcome.missed.append(outcome.noops_sent)
-                outcome.halt = halted()
-                return replied and not outcome.halt
+                return send_closed_by_noop(link, bad, noop, outcome, halted)
 
             outcome.read_out_overflowed = read_out(link, play, seed).overflowed
         outcome.noops_answered = link.events[NOOP_EVENT]
