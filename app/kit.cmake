@@ -19,6 +19,14 @@ set(FPRIME_FRAMEWORK_PATH "${KIT_DEPS}/fprime" CACHE PATH "F´ (nasa/fprime)")
 set(FPRIME_ZEPHYR_PATH "${KIT_DEPS}/fprime-zephyr" CACHE PATH "fprime-zephyr")
 set(FPRIME_BAREMETAL_PATH "${KIT_DEPS}/fprime-baremetal" CACHE PATH "fprime-baremetal")
 
+# --- The deployment ----------------------------------------------------
+# The F´ deployment the kit measures: the reference one (app/) unless the
+# build names another folder with the same seam (docs/your-deployment.md):
+#   west build -b qemu_cortex_m3 app -- -DKIT_DEPLOYMENT_DIR=<folder>
+set(KIT_DEPLOYMENT_DIR "${KIT_ROOT}/app" CACHE PATH "The F´ deployment the kit builds and measures")
+include("${CMAKE_CURRENT_LIST_DIR}/deployment.cmake")
+kit_check_deployment("${KIT_DEPLOYMENT_DIR}")
+
 # --- Workspace, board and toolchain (app/board.cmake, shared with tests/floor)
 include("${CMAKE_CURRENT_LIST_DIR}/board.cmake")
 kit_require_workspace("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake"
@@ -99,10 +107,19 @@ macro(kit_deployment)
     endif()
     fprime_zephyr_setup()
 
-    # The shared deployment
-    add_fprime_subdirectory("${KIT_ROOT}/app/config")
-    add_fprime_subdirectory("${KIT_ROOT}/app/Components")
-    add_fprime_subdirectory("${KIT_ROOT}/app/Top")
+    # The deployment (KIT_DEPLOYMENT_DIR): its F´ configuration, the kit's
+    # components and instruments, which its topology imports, then its own
+    # components and its topology
+    add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/config")
+    # The kit's components, the same in any deployment: the instruments',
+    # health's ping probe, the ground link's health and the fatal handler
+    # that reports a halt
+    foreach(KIT_COMPONENT IN ITEMS Timing Uplink Downlink LinkHealth FatalHandler Load Faults PingProbe)
+        add_fprime_subdirectory("${KIT_ROOT}/app/Components/${KIT_COMPONENT}")
+    endforeach()
+    add_fprime_subdirectory("${KIT_ROOT}/app/Instruments")
+    add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/Components")
+    add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/Top")
 
     # The execution model (CONFIG_KIT_MODEL_*): its folder's model.cmake
     # registers its config and OS layer and sets KIT_MODEL_SOURCES and
@@ -117,6 +134,10 @@ macro(kit_deployment)
     else()
         set(KIT_FILE_IMPLEMENTATION Os_File_Stub)
     endif()
+
+    # The deployment's topology module, as F´ names it from its folder
+    get_module_name("${KIT_DEPLOYMENT_DIR}/Top")
+    set(KIT_TOPOLOGY_MODULE "${MODULE_NAME}")
 
     # Every scenario, and the choice among them (app/scenarios/Scenarios.cpp)
     file(GLOB KIT_SCENARIO_SOURCES CONFIGURE_DEPENDS "${KIT_ROOT}/app/scenarios/*.cpp")
@@ -137,12 +158,18 @@ macro(kit_deployment)
             "${KIT_ROOT}/app/src/Restart.cpp"
             ${KIT_MODEL_SOURCES}
         DEPENDS
-            app_Top
+            ${KIT_TOPOLOGY_MODULE}
         CHOOSES_IMPLEMENTATIONS
             ${KIT_FILE_IMPLEMENTATION}
             ${KIT_MODEL_IMPLEMENTATIONS}
     )
     target_include_directories(app PRIVATE "${KIT_ROOT}")
+    # The kit's code reaches the deployment's topology as "Top/...": its
+    # headers, and those F´ generates for it (GeneratedIds.hpp,
+    # FppConstantsAc.hpp: under the build folder, at the deployment's path
+    # in the F´ project)
+    file(RELATIVE_PATH KIT_DEPLOYMENT_PATH "${KIT_ROOT}" "${KIT_DEPLOYMENT_DIR}")
+    target_include_directories(app PRIVATE "${KIT_DEPLOYMENT_DIR}" "${CMAKE_BINARY_DIR}/${KIT_DEPLOYMENT_PATH}")
     if(NOT KIT_SUB_BUILD)
         kit_zephyr_link()
     endif()
@@ -160,9 +187,9 @@ macro(kit_zephyr_link)
     # module), compiled in for the LINK line: app/dictionary_id.cmake
     set(KIT_DICTIONARY_ID_HEADER "${CMAKE_BINARY_DIR}/kit/KitDictionaryId.hpp")
     add_custom_command(OUTPUT "${KIT_DICTIONARY_ID_HEADER}"
-        COMMAND "${CMAKE_COMMAND}" "-DDICTIONARY=$<TARGET_PROPERTY:app_Top,FPRIME_DICTIONARIES>"
+        COMMAND "${CMAKE_COMMAND}" "-DDICTIONARY=$<TARGET_PROPERTY:${KIT_TOPOLOGY_MODULE},FPRIME_DICTIONARIES>"
             "-DOUTPUT=${KIT_DICTIONARY_ID_HEADER}" -P "${KIT_ROOT}/app/dictionary_id.cmake"
-        DEPENDS "$<TARGET_PROPERTY:app_Top,FPRIME_DICTIONARIES>" "${KIT_ROOT}/app/dictionary_id.cmake"
+        DEPENDS "$<TARGET_PROPERTY:${KIT_TOPOLOGY_MODULE},FPRIME_DICTIONARIES>" "${KIT_ROOT}/app/dictionary_id.cmake"
         COMMENT "Naming the F´ dictionary for the LINK line")
     target_sources(app PRIVATE "${KIT_DICTIONARY_ID_HEADER}")
     target_include_directories(app PRIVATE "${CMAKE_BINARY_DIR}/kit")

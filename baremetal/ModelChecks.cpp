@@ -11,8 +11,8 @@
 // stop the build instead. (app/src/TopologyChecks.cpp checks what holds in
 // every model.)
 // ======================================================================
-#include "app/Top/FppConstantsAc.hpp"
-#include "app/Top/KitTopology.hpp"
+#include "Top/FppConstantsAc.hpp"
+#include "Top/KitTopology.hpp"
 // After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
 #include <zephyr/autoconf.h>
 

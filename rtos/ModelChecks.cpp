@@ -11,9 +11,9 @@
 // asserts stop the build instead. (app/src/TopologyChecks.cpp checks what
 // holds in every model.)
 // ======================================================================
-#include "app/Top/ActiveStacks.hpp"
-#include "app/Top/FppConstantsAc.hpp"
-#include "app/Top/KitTopology.hpp"
+#include "Top/ActiveStacks.hpp"
+#include "Top/FppConstantsAc.hpp"
+#include "Top/KitTopology.hpp"
 #include "rtos/Os/PriorityMap.hpp"
 // After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
 #include <zephyr/autoconf.h>

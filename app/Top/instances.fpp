@@ -137,10 +137,7 @@ module Kit {
 
   # tlmSend, the telemetry store: app/Top/telemetry/ (CONFIG_KIT_TELEMETRY_LINEAR)
 
-  instance load: Kit.Load base id 0x1600 \
-    queue size Queues.load \
-    stack size Stacks.load \
-    priority Priorities.load
+  # load, the background load: the kit's instruments (app/Instruments/)
 
   @ The downlink's queue: events before telemetry, one packet on the wire at a time
   instance comQueue: Svc.ComQueue base id 0x2000 \
@@ -269,19 +266,11 @@ module Kit {
 
   instance rateGroupDriver: Svc.RateGroupDriver base id 0x0400
 
-  instance timing: Kit.Timing base id 0x1000
-
   instance controller: Kit.Controller base id 0x1100
 
   instance monitor: Kit.Monitor base id 0x1200
 
   instance housekeeping: Kit.Housekeeping base id 0x1300
-
-  instance uplink: Kit.Uplink base id 0x1400
-
-  instance downlink: Kit.Downlink base id 0x1500
-
-  instance faults: Kit.Faults base id 0x1700
 
   instance osTime: Svc.OsTime base id 0x0800
 

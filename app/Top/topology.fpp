@@ -10,15 +10,10 @@ module Kit {
     instance rg10Hz
     instance events
     instance tlmSend
-    instance load
     instance rateGroupDriver
-    instance timing
     instance controller
     instance monitor
     instance housekeeping
-    instance uplink
-    instance downlink
-    instance faults
     instance osTime
     instance fatalAdapter
     instance fatalHandler
@@ -31,6 +26,10 @@ module Kit {
     instance linkBuffers
     instance linkUart
     instance linkHealth
+
+    # The kit's instruments: timing, the scripted uplink, the downlink's
+    # tally, the background load, faults (app/Instruments/)
+    import Instruments
 
     # The command dispatcher in the build's form, with the connection only
     # that form has (app/Top/dispatcher/)
@@ -98,11 +97,6 @@ module Kit {
       # [10]: the file downlink's 10 Hz run, where the build has it (app/Top/services/)
       # [11]: the sequencer's 10 Hz clock, where the build has it (app/Top/services/)
       rg10Hz.RateGroupMemberOut[12] -> timing.cycleEnd[2]
-    }
-
-    # The background load's burst goes through its own queue
-    connections Load {
-      load.ioOut -> load.ioIn
     }
 
     connections Control {

@@ -9,8 +9,8 @@
 // system running: every rate group still completes every cycle, and a
 // valid command after the faults is still answered OK.
 // ======================================================================
-#include "app/Top/GeneratedIds.hpp"
-#include "app/Top/KitTopology.hpp"
+#include "Top/GeneratedIds.hpp"
+#include "Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

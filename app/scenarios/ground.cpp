@@ -14,7 +14,7 @@
 // downlink's SendPartial files down it) and prints
 // its SWEEP lines, then serves on. scripts/kittools/link/serial_sweep.py drives it.
 
-#include "app/Top/KitTopology.hpp"
+#include "Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

@@ -4,8 +4,8 @@
 // \brief  The comparison run: the deployment at its nominal load for
 //         CONFIG_KIT_RUN_TICKS ticks, with a short command script
 // ======================================================================
-#include "app/Top/GeneratedIds.hpp"
-#include "app/Top/KitTopology.hpp"
+#include "Top/GeneratedIds.hpp"
+#include "Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

@@ -11,7 +11,7 @@
 // included: the reference is taken after it, since printing the line and
 // starting the next segment run on the main stack too).
 // ======================================================================
-#include "app/Top/KitTopology.hpp"
+#include "Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/HeapMonitor.hpp"
 #include "app/src/Report.hpp"

@@ -5,10 +5,10 @@
 // ======================================================================
 #include "app/src/Report.hpp"
 #include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
+#include "Top/GeneratedIds.hpp"
+#include "Top/KitTopology.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
-#include "app/Top/GeneratedIds.hpp"
-#include "app/Top/KitTopology.hpp"
 #include "app/src/HeapMonitor.hpp"
 #include "app/src/RamFs.hpp"
 

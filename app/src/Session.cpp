@@ -4,9 +4,9 @@
 // \brief  The shared main loop, segment by segment
 // ======================================================================
 #include "app/src/Session.hpp"
+#include "Top/KitTopology.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
-#include "app/Top/KitTopology.hpp"
 #include "app/src/Fatal.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/TickControl.hpp"

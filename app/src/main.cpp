@@ -10,8 +10,8 @@
 // ======================================================================
 #include <Os/Os.hpp>
 
+#include "Top/KitTopology.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
-#include "app/Top/KitTopology.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/CountingAllocator.hpp"
 #include "app/src/HeapMonitor.hpp"

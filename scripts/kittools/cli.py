@@ -33,7 +33,10 @@ def parser() -> argparse.ArgumentParser:
     p = sub.add_parser("compare", help="build and run every variant, print the comparison")
     p.add_argument("--board", action="append",
                    help="board to compare on (repeatable; default: every platform of the suite)")
-    p.add_argument("--output", default=str(KIT_ROOT / "build" / "compare"), help="build folders, logs, results")
+    p.add_argument("--output", help="build folders, logs, results (default: build/compare, or "
+                   "build/compare-<folder> for --deployment)")
+    p.add_argument("--deployment", metavar="DIR",
+                   help="the F´ deployment to measure (default: the reference one, app/; docs/your-deployment.md)")
     variants.add_model_option(p, "the variants to compare (repeatable; default: every one)", repeatable=True)
     p.set_defaults(func=compare.run)
     r = sub.add_parser("report", help="report of results files (build/compare/<board>/comparison.json)")

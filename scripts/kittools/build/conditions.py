@@ -8,6 +8,7 @@ import subprocess
 from pathlib import Path
 
 from kittools.build.folder import BuildFolder
+from kittools.deployment import CACHE_ENTRY, label
 
 # Kconfig values that change what the kit measures
 KCONFIG = (
@@ -33,6 +34,14 @@ def toolchain(folder: BuildFolder) -> str:
     return result.stdout.splitlines()[0] if result.returncode == 0 and result.stdout else "unknown"
 
 
+def deployment(folder: BuildFolder) -> str:
+    """The F´ deployment the build measures (its folder, relative to the
+    kit: "app" for the reference one), or "unknown"."""
+    path = folder.cache_value(CACHE_ENTRY) if folder.configured() else None
+    return label(Path(path)) if path else "unknown"
+
+
 def read(build_dir: Path) -> dict[str, object]:
     folder = BuildFolder(build_dir)
-    return {"toolchain": toolchain(folder), "kconfig": kconfig(folder), "fprime": folder.fprime_settings()}
+    return {"toolchain": toolchain(folder), "deployment": deployment(folder), "kconfig": kconfig(folder),
+            "fprime": folder.fprime_settings()}

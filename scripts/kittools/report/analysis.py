@@ -25,6 +25,11 @@ def conditions_text(data: Results) -> Text:
                  f"Rate-group tick {c.get('tick_hz')} Hz, system clock {c.get('sys_tick_hz')} Hz, cycle counter "
                  f"{c.get('cycles_hz')} Hz, QEMU icount shift {c.get('icount_shift')}, run of "
                  f"{c.get('run_ticks')} ticks."]
+    deployments = sorted({str(data.variants[name].build["deployment"]) for name in data.names()
+                          if data.variants[name].build.get("deployment")})
+    if deployments:
+        lines.append(f"F´ deployment measured: {', '.join(deployments)} (its folder in the kit; app is the "
+                     "reference deployment).")
     for name in data.names():
         build = data.variants[name].build
         if build.get("toolchain"):

@@ -128,15 +128,18 @@ class RunWatcher:
 
 def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT,
                 scenarios: tuple[str, ...] = (), exclude_tags: tuple[str, ...] = (),
-                models: tuple[str, ...] = (), with_floor: bool = True, subset: str | None = None) -> Tally:
+                models: tuple[str, ...] = (), with_floor: bool = True, subset: str | None = None,
+                cmake_args: tuple[str, ...] = ()) -> Tally:
     """The suite (tests/) on every board: one build per execution model and
     board, each playing every scenario, or only `scenarios` (pytest's -k),
     but for the test suites tagged with one of `exclude_tags`; with
     `models`, only those variants' builds (and the kernel floor's, unless
     not `with_floor`); with `subset` (K/N), twister's own share K of N of
-    the configurations (kit test --subset); two builds or QEMU runs at a time (icount timing does not depend on the
-    host's load). Twister's whole output goes to <log_dir>/twister.log; one
-    line per finished configuration is printed."""
+    the configurations (kit test --subset); `cmake_args` (-DNAME=value) to
+    every build (a deployment's: kittools.deployment); two builds or QEMU
+    runs at a time (icount timing does not depend on the host's load).
+    Twister's whole output goes to <log_dir>/twister.log; one line per
+    finished configuration is printed."""
     for console_log in out_dir.glob(f"*/**/{floor.PREFIX}*/{CONSOLE_LOG}"):  # the kernel floor's records
         console_log.unlink()
     command = ["west", "twister", "-T", "tests", "-j", "2", "--overflow-as-errors"]
@@ -152,6 +155,8 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
         command += ["-s", scenario]
     if subset:
         command += ["--subset", subset]
+    for argument in cmake_args:
+        command.append("-x=" + argument.removeprefix("-D"))
     tally = play(command, log_dir / "twister.log", out_dir)
     say_built_only(out_dir)
     say_profiles(out_dir)
@@ -203,7 +208,8 @@ def play(command: list[str], log: Path, out_dir: Path) -> Tally:
     # twister configures from is as it was then (configured_from); ninja
     # configures again whatever else changed.
     stamp = out_dir / CONFIGURED_FROM
-    fingerprint = configured_from()
+    # ... and from the CMake entries the command adds (a deployment's folder)
+    fingerprint = configured_from() + "".join(f" {arg}" for arg in command if arg.startswith("-x="))
     reuse = stamp.is_file() and stamp.read_text().strip() == fingerprint
     stamp.unlink(missing_ok=True)
     if not reuse:

@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: Apache-2.0
+# ======================================================================
+# deployment.cmake: the seam between the kit and the F´ deployment it
+# measures (KIT_DEPLOYMENT_DIR; docs/your-deployment.md). A deployment
+# folder holds F´'s usual three parts, each an F´ CMake folder:
+#   config/       its F´ configuration (register_fprime_config)
+#   Components/   its own components
+#   Top/          its topology, which imports the kit's instruments
+#                 (`import Instruments` in module Kit, app/Instruments/)
+# A folder that is not one is refused here, before Zephyr configures, with
+# the one thing it lacks.
+# ======================================================================
+include_guard(GLOBAL)
+
+function(kit_check_deployment DIR)
+    set(KIT_SEAM_DOC "The seam a deployment provides: docs/your-deployment.md.")
+    if(NOT IS_DIRECTORY "${DIR}")
+        message(FATAL_ERROR "kit: the deployment folder '${DIR}' (KIT_DEPLOYMENT_DIR) does not exist. ${KIT_SEAM_DOC}")
+    endif()
+    # F´ builds a module only inside its project or a library location
+    # (app/settings.ini): the kit's repository is the project
+    file(RELATIVE_PATH KIT_PATH "${KIT_ROOT}" "${DIR}")
+    if(KIT_PATH MATCHES "^\\.\\.")
+        message(FATAL_ERROR "kit: the deployment folder '${DIR}' is outside the kit's F´ project (${KIT_ROOT}); "
+            "put it inside it (under tests/, for example). ${KIT_SEAM_DOC}")
+    endif()
+    foreach(KIT_PART IN ITEMS config Components Top)
+        if(NOT EXISTS "${DIR}/${KIT_PART}/CMakeLists.txt")
+            message(FATAL_ERROR "kit: '${DIR}' is not a kit deployment: it has no ${KIT_PART}/CMakeLists.txt. "
+                "${KIT_SEAM_DOC}")
+        endif()
+    endforeach()
+    # The topology must import the kit's instruments: without them nothing
+    # is measured, and F´ would only fail later on a missing instance
+    file(GLOB_RECURSE KIT_TOPOLOGY_FILES "${DIR}/Top/*.fpp")
+    set(KIT_IMPORTS_INSTRUMENTS OFF)
+    foreach(KIT_FILE IN LISTS KIT_TOPOLOGY_FILES)
+        file(STRINGS "${KIT_FILE}" KIT_IMPORT REGEX "^[ \t]*import[ \t]+(Kit\\.)?Instruments[ \t]*(#.*)?$")
+        if(KIT_IMPORT)
+            set(KIT_IMPORTS_INSTRUMENTS ON)
+        endif()
+    endforeach()
+    if(NOT KIT_IMPORTS_INSTRUMENTS)
+        message(FATAL_ERROR "kit: the topology of '${DIR}' does not import the kit's instruments: add "
+            "`import Kit.Instruments` to its topology (Top/*.fpp). ${KIT_SEAM_DOC}")
+    endif()
+endfunction()
+
+# The same check from the kit's commands, before any build starts:
+#   cmake -DKIT_ROOT=<kit> -DKIT_DEPLOYMENT_DIR=<folder> -P app/deployment.cmake
+if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
+    kit_check_deployment("${KIT_DEPLOYMENT_DIR}")
+endif()

@@ -1,0 +1,73 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The F´ deployment a command builds and measures: the reference one (app/)
+or a team's, named by --deployment (docs/your-deployment.md). The seam's
+rules are app/deployment.cmake's, which every build applies; a command
+asks it before it starts, so a folder that is not a deployment gets one
+clear error before any build."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+from kittools.workspace import KIT_ROOT, KitError
+
+#: The kit's reference deployment
+REFERENCE = KIT_ROOT / "app"
+#: The seam's rules (app/deployment.cmake), in CMake's script mode
+SEAM_RULES = KIT_ROOT / "app" / "deployment.cmake"
+#: A line of CMake's error that only says where in the rules it came from
+_CMAKE_LOCATION = re.compile(r"\.cmake:\d+ \(")
+#: The CMake cache entry that names a build's deployment (app/kit.cmake)
+CACHE_ENTRY = "KIT_DEPLOYMENT_DIR"
+
+
+@dataclass(frozen=True)
+class Deployment:
+    """A deployment folder, checked against the seam."""
+
+    path: Path
+
+    @property
+    def is_reference(self) -> bool:
+        return self.path == REFERENCE
+
+    @property
+    def name(self) -> str:
+        """Its folder, relative to the kit ("app" for the reference)."""
+        return label(self.path)
+
+    def cmake_args(self) -> list[str]:
+        """What a build of it adds to CMake's command line: nothing for the
+        reference, so that its builds stay those of every other command."""
+        return [] if self.is_reference else [f"-D{CACHE_ENTRY}={self.path}"]
+
+    def output_suffix(self) -> str:
+        """What sets its build folders apart from the reference's: "" or
+        "-<folder name>"."""
+        return "" if self.is_reference else f"-{self.path.name}"
+
+
+def label(path: Path) -> str:
+    """A deployment folder as the report names it: relative to the kit."""
+    try:
+        return str(path.resolve().relative_to(KIT_ROOT))
+    except ValueError:
+        return str(path)
+
+
+def resolve(folder: str | Path | None) -> Deployment:
+    """The deployment in `folder` (None: the reference), checked against the
+    seam's rules; KitError with the one thing it lacks otherwise."""
+    path = REFERENCE if folder is None else Path(folder).expanduser().resolve()
+    result = subprocess.run(["cmake", f"-DKIT_ROOT={KIT_ROOT}", f"-D{CACHE_ENTRY}={path}", "-P", str(SEAM_RULES)],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        message = " ".join(line.strip() for line in result.stderr.splitlines()
+                           if line.strip() and not line.startswith(("CMake Error", "Call Stack"))
+                           and not _CMAKE_LOCATION.search(line))
+        raise KitError(" ".join(message.split())
+                       or f"the deployment folder {path} failed the seam's check ({SEAM_RULES})")
+    return Deployment(path)

@@ -1,0 +1,84 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The seam between the kit and the deployment it measures (app/deployment.cmake,
+kittools.deployment): the reference deployment passes, a folder that is not
+one gets one clear error naming what it lacks, and a deployment's builds
+are told apart from the reference's."""
+
+from __future__ import annotations
+
+import shutil
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from kittools import deployment
+from kittools.build import conditions
+from kittools.build.folder import BuildFolder
+from kittools.workspace import KIT_ROOT, KitError
+
+
+@pytest.fixture
+def inside_kit() -> Iterator[Path]:
+    """A scratch folder inside the kit's F´ project (build/ is never committed)."""
+    folder = KIT_ROOT / "build" / "test-deployment-seam"
+    shutil.rmtree(folder, ignore_errors=True)
+    folder.mkdir(parents=True)
+    yield folder
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+def _seam(folder: Path, topology: str = "module Kit {\n  topology Mine {\n    import Instruments\n  }\n}\n") -> Path:
+    for part in ("config", "Components", "Top"):
+        (folder / part).mkdir(parents=True, exist_ok=True)
+        (folder / part / "CMakeLists.txt").write_text("")
+    (folder / "Top" / "topology.fpp").write_text(topology)
+    return folder
+
+
+def test_the_reference_deployment_is_the_default_and_adds_nothing_to_a_build():
+    reference = deployment.resolve(None)
+    assert reference.is_reference and reference.name == "app"
+    assert reference.cmake_args() == [] and reference.output_suffix() == ""
+
+
+def test_a_deployment_with_the_seam_passes_and_is_named_by_its_folder(inside_kit: Path):
+    mine = deployment.resolve(_seam(inside_kit / "mine"))
+    assert mine.name == "build/test-deployment-seam/mine"
+    assert mine.cmake_args() == [f"-DKIT_DEPLOYMENT_DIR={inside_kit / 'mine'}"]
+    assert mine.output_suffix() == "-mine"
+
+
+def test_a_topology_may_import_the_instruments_by_their_qualified_name(inside_kit: Path):
+    topology = "module Mine {\n  topology Mine {\n    import Kit.Instruments  # the kit's\n  }\n}\n"
+    assert deployment.resolve(_seam(inside_kit / "mine", topology)).name.endswith("mine")
+
+
+@pytest.mark.parametrize(("make", "says"), [
+    (lambda root: root / "missing", "does not exist"),
+    (lambda root: root, "has no config/CMakeLists.txt"),
+    (lambda root: _seam(root / "x").joinpath("Top", "CMakeLists.txt").unlink() or root / "x",
+     "has no Top/CMakeLists.txt"),
+    (lambda root: _seam(root / "y", "module Y {\n  topology Y {\n  }\n}\n"),
+     "does not import the kit's instruments"),
+])
+def test_a_folder_that_is_not_a_deployment_gets_one_clear_error(inside_kit: Path, make, says):
+    with pytest.raises(KitError) as error:
+        deployment.resolve(make(inside_kit))
+    message = str(error.value)
+    assert says in message and "docs/your-deployment.md" in message
+    assert ".cmake:" not in message and "\n" not in message  # CMake's noise left out
+
+
+def test_a_deployment_outside_the_kits_fprime_project_is_refused(tmp_path: Path):
+    with pytest.raises(KitError, match="outside the kit's F´ project"):
+        deployment.resolve(_seam(tmp_path / "elsewhere"))
+
+
+def test_a_builds_conditions_name_its_deployment(tmp_path: Path):
+    build = tmp_path / "build"
+    build.mkdir()
+    (build / "CMakeCache.txt").write_text(f"KIT_DEPLOYMENT_DIR:PATH={KIT_ROOT / 'tests' / 'mine'}\n")
+    assert conditions.deployment(BuildFolder(build)) == "tests/mine"
+    (build / "CMakeCache.txt").write_text("CMAKE_BUILD_TYPE:STRING=\n")
+    assert conditions.deployment(BuildFolder(build)) == "unknown"
