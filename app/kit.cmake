@@ -150,7 +150,6 @@ macro(kit_deployment)
             "${KIT_ROOT}/app/src/Fatal.cpp"
             "${KIT_ROOT}/app/src/TickClock.cpp"
             "${KIT_ROOT}/app/src/Stages.cpp"
-            "${KIT_ROOT}/app/src/TopologyChecks.cpp"
             ${KIT_SCENARIO_SOURCES}
             "${KIT_ROOT}/app/src/CountingAllocator.cpp"
             "${KIT_ROOT}/app/src/HeapMonitor.cpp"

@@ -8,7 +8,7 @@
 // priority table (app/Top/Tables.fpp, or a board's override) are sized in
 // different places; a mismatch would show only at run time (a task that
 // never runs, a dispatcher deferred until its queue asserts). These asserts
-// stop the build instead. (app/src/TopologyChecks.cpp checks what holds in
+// stop the build instead. (app/Top/TopologyChecks.cpp checks what holds in
 // every model.)
 // ======================================================================
 #include "Top/FppConstantsAc.hpp"

@@ -8,7 +8,7 @@
 // tick thread's priority are sized in different places; a mismatch would
 // show only at run time (a task that never starts, a stack that does not
 // fit its pool slot, a feeder that overfills the downlink's queue). These
-// asserts stop the build instead. (app/src/TopologyChecks.cpp checks what
+// asserts stop the build instead. (app/Top/TopologyChecks.cpp checks what
 // holds in every model.)
 // ======================================================================
 #include "Top/ActiveStacks.hpp"

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  GeneratedIds.hpp
-// \brief  Opcodes and event IDs the deployment code needs by name
+// \brief  Opcodes and event IDs of the deployment's services the kit needs
+//         by name: its dispatcher's, health's and version's (the kit's
+//         instruments' are app/Instruments/InstrumentIds.hpp)
 //
 // FPP generates them as protected members of each component base. These
 // derived types (never instantiated) make the few the kit uses readable
@@ -21,10 +23,6 @@
 #include "Svc/Health/HealthComponentAc.hpp"
 #include "Svc/Version/VersionComponentAc.hpp"
 #endif
-#include "app/Components/Controller/ControllerComponentAc.hpp"
-#include "app/Components/Faults/FaultsComponentAc.hpp"
-#include "app/Components/Load/LoadComponentAc.hpp"
-#include "app/Components/Timing/TimingComponentAc.hpp"
 
 namespace Kit {
 
@@ -42,22 +40,6 @@ struct CmdDispIds : CmdDispBase {
     static constexpr FwEventIdType OPCODE_ERROR = EVENTID_OPCODEERROR;
 };
 
-struct ControllerIds : ControllerComponentBase {
-    static constexpr FwOpcodeType SET_SETPOINT = OPCODE_SET_SETPOINT;
-};
-
-struct LoadIds : LoadComponentBase {
-    static constexpr FwOpcodeType SET_SLICE = OPCODE_SET_SLICE;
-    static constexpr FwOpcodeType SET_BURST = OPCODE_SET_BURST;
-    static constexpr FwEventIdType MESSAGES_DROPPED = EVENTID_MESSAGESDROPPED;
-};
-
-struct FaultsIds : FaultsComponentBase {
-    static constexpr FwOpcodeType OVERRUN = OPCODE_OVERRUN;
-    static constexpr FwOpcodeType STACK_OVERFLOW = OPCODE_STACK_OVERFLOW;
-    static constexpr FwOpcodeType ASSERT = OPCODE_ASSERT;
-};
-
 #if defined(CONFIG_KIT_SERVICE_CDH)
 struct HealthIds : Svc::HealthComponentBase {
     static constexpr FwEventIdType PING_WARN = EVENTID_HLTH_PING_WARN;
@@ -69,10 +51,6 @@ struct VersionIds : Svc::VersionComponentBase {
     static constexpr FwEventIdType PROJECT_VERSION = EVENTID_PROJECTVERSION;
 };
 #endif
-struct TimingIds : TimingComponentBase {
-    static constexpr FwEventIdType RATE_GROUP_SLIP = EVENTID_RATEGROUPSLIP;
-};
-
 }  // namespace Kit
 
 #endif

@@ -13,7 +13,7 @@ module Kit {
     @ The dispatcher's queue holds commands from both uplinks (each in
     @ flight takes one slot: the command, then its answer), and its 10 Hz
     @ telemetry call. It asserts when full: the ground's share is capped
-    @ (Link.commandsInFlight, checked in app/src/TopologyChecks.cpp), which
+    @ (Link.commandsInFlight, checked in app/Top/TopologyChecks.cpp), which
     @ leaves room for the call and the scripted uplink
     constant cmdDisp = 8
     @ Events arrive in bursts where a command is dispatched in its
@@ -47,7 +47,7 @@ module Kit {
     @ The file uplink: each packet the router hands it holds one of the
     @ link's buffers until it is written, so the queue takes every buffer
     @ of the pool and health's ping, and never fills (F´ asserts on a
-    @ full queue; checked in app/src/TopologyChecks.cpp)
+    @ full queue; checked in app/Top/TopologyChecks.cpp)
     constant fileUplink = Link.bufferCount + 1
     @ The sequencer: its 10 Hz clock, a command's answer, a CS_ command
     @ and health's ping, with one spare

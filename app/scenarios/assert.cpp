@@ -8,8 +8,8 @@
 // and the run must end with the failure marker twister reads at once. If
 // the scenario gets past the assert, the fatal path is broken: it FAILs.
 // ======================================================================
-#include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
+#include "app/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Fatal.hpp"
 #include "app/src/Session.hpp"

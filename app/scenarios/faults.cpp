@@ -11,6 +11,7 @@
 // ======================================================================
 #include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
+#include "app/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
@@ -22,16 +23,22 @@ namespace Scenario {
 
 namespace {
 constexpr U32 RUN_TICKS = 2000;
-constexpr U32 OVERRUN_US = 1500;    // 1.5 periods of the 1 kHz group
 constexpr U32 OVERFLOW_BURST = 16;  // more than the load's queue holds
 constexpr FwIndexType FASTEST = 0;
 constexpr FwSizeType SCRIPT_FRAMES = 10;
 
 // Built in its own frame, which is gone before the run starts: on baremetal
 // the main stack is every task's
+// An overrun of 1.5 periods of the fastest group, whatever its rate
+U32 overrunUs() {
+    constexpr U32 TICK_US = 1000000U / CONFIG_KIT_TICK_HZ;
+    return RATE_GROUPS[FASTEST].divisor * TICK_US * 3U / 2U;
+}
+
 __attribute__((noinline)) void buildScript(Uplink::Frame* const script) {
-    const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
-    const U8 shortArgs[] = {0x00, 0x07};                        // an I32 needs 4 bytes
+    // A command with an argument every deployment has: the kit's load's
+    const FwOpcodeType setSlice = load.getIdBase() + LoadIds::SET_SLICE;
+    const U8 shortArgs[] = {0x00, 0x07};                        // a U32 needs 4 bytes
     const U8 garbage[] = {0xDE, 0xAD, 0xBE, 0xEF, 0x01, 0x02};  // not a command packet
     const U8 truncated[] = {0x00};                              // not even a descriptor
     const Fw::CmdResponse format = Fw::CmdResponse::FORMAT_ERROR;
@@ -40,16 +47,16 @@ __attribute__((noinline)) void buildScript(Uplink::Frame* const script) {
     // would cost the main thread's stack (the sentinel caught that on rtos)
     script[0] = command(2, 0x7FFF, Args());
     script[0].expected = Fw::CmdResponse::INVALID_OPCODE;
-    script[1] = Uplink::commandFrame(3, setSetpoint, shortArgs, sizeof shortArgs);
+    script[1] = Uplink::commandFrame(3, setSlice, shortArgs, sizeof shortArgs);
     script[1].expected = format;
-    // Too long: the I32 and two stray bytes
-    script[2] = command(4, setSetpoint, Args().add(static_cast<I32>(1000)).add(static_cast<U16>(7)));
+    // Too long: the U32 and two stray bytes
+    script[2] = command(4, setSlice, Args().add(static_cast<U32>(0)).add(static_cast<U16>(7)));
     script[2].expected = format;
     script[3] = Uplink::rawFrame(5, garbage, sizeof garbage, invalid);
     script[4] = Uplink::rawFrame(6, truncated, sizeof truncated, invalid);
     script[5] = noOpFrame(7);
     script[6] =
-        command(8, faults.getIdBase() + FaultsIds::OVERRUN, Args().add(static_cast<U8>(FASTEST)).add(OVERRUN_US));
+        command(8, faults.getIdBase() + FaultsIds::OVERRUN, Args().add(static_cast<U8>(FASTEST)).add(overrunUs()));
     script[7] = command(9, load.getIdBase() + LoadIds::SET_BURST, Args().add(OVERFLOW_BURST).add(static_cast<U32>(0)));
     script[8] =
         command(11, load.getIdBase() + LoadIds::SET_BURST, Args().add(static_cast<U32>(0)).add(static_cast<U32>(0)));

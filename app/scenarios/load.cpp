@@ -14,8 +14,8 @@
 //   burst  BURST_MESSAGES messages through the load's queue every 10 Hz
 //          cycle, each that long (a telemetry or serial burst).
 // ======================================================================
-#include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
+#include "app/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

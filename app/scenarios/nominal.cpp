@@ -4,8 +4,8 @@
 // \brief  The comparison run: the deployment at its nominal load for
 //         CONFIG_KIT_RUN_TICKS ticks, with a short command script
 // ======================================================================
-#include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
+#include "app/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"
@@ -16,15 +16,17 @@ namespace Scenario {
 namespace {
 constexpr FwSizeType SCRIPT_FRAMES = 3;
 
-// At 10 Hz cycle 2 a NO_OP, then the controller's setpoint changed and
-// changed back: dispatch, arguments and events are all exercised. Built in
+// At 10 Hz cycle 2 a NO_OP, then two commands with an argument: dispatch,
+// arguments and events are all exercised, in any deployment. Built in
 // its own frame, gone before the run: on baremetal the main stack is every
 // task's.
 __attribute__((noinline)) void buildScript(Uplink::Frame* const script) {
-    const FwOpcodeType setSetpoint = controller.getIdBase() + ControllerIds::SET_SETPOINT;
+    // Commands with arguments every deployment has: the kit's load's,
+    // setting the slice it already has (none), so the run is unchanged
+    const FwOpcodeType setSlice = load.getIdBase() + LoadIds::SET_SLICE;
     script[0] = noOpFrame(2);
-    script[1] = command(4, setSetpoint, Args().add(static_cast<I32>(2000)));
-    script[2] = command(8, setSetpoint, Args().add(static_cast<I32>(1000)));
+    script[1] = command(4, setSlice, Args().add(static_cast<U32>(0)));
+    script[2] = command(8, setSlice, Args().add(static_cast<U32>(0)));
 }
 }  // namespace
 

@@ -9,8 +9,8 @@
 // sentinel (or MPU guard) on rtos, the kit's stack guard on baremetal. If
 // the scenario gets past the overflow, nothing detected it: the run FAILs.
 // ======================================================================
-#include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
+#include "app/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Fatal.hpp"
 #include "app/src/Session.hpp"

@@ -11,9 +11,9 @@
 // dispatcher) and nothing of a model: each execution model checks that the
 // topology fits it in its own folder (<model>/ModelChecks.cpp).
 // ======================================================================
-#include "Top/ActiveStacks.hpp"
-#include "Top/FppConstantsAc.hpp"
-#include "Top/KitTopology.hpp"
+#include "app/Top/ActiveStacks.hpp"
+#include "app/Top/FppConstantsAc.hpp"
+#include "app/Top/KitTopology.hpp"
 // After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
 #include <zephyr/autoconf.h>
 
