@@ -6,7 +6,7 @@
 #   config/       its F´ configuration (register_fprime_config)
 #   Components/   its own components
 #   Top/          its topology, which imports the kit's instruments
-#                 (`import Instruments` in module Kit, app/Instruments/)
+#                 (`import Instruments` in module Kit, app/Subtopologies/Instruments/)
 # A folder that is not one is refused here, before Zephyr configures, with
 # the one thing it lacks.
 # ======================================================================

@@ -108,8 +108,8 @@ macro(kit_deployment)
     fprime_zephyr_setup()
 
     # The deployment (KIT_DEPLOYMENT_DIR): its F´ configuration, the kit's
-    # components and instruments, which its topology imports, then its own
-    # components and its topology
+    # components and subtopologies (the instruments, the ground link), which
+    # its topology imports, then its own components and its topology
     add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/config")
     # The kit's components, the same in any deployment: the instruments',
     # health's ping probe, the ground link's health and the fatal handler
@@ -117,7 +117,8 @@ macro(kit_deployment)
     foreach(KIT_COMPONENT IN ITEMS Timing Uplink Downlink LinkHealth FatalHandler Load Faults PingProbe)
         add_fprime_subdirectory("${KIT_ROOT}/app/Components/${KIT_COMPONENT}")
     endforeach()
-    add_fprime_subdirectory("${KIT_ROOT}/app/Instruments")
+    add_fprime_subdirectory("${KIT_ROOT}/app/Subtopologies/Instruments")
+    add_fprime_subdirectory("${KIT_ROOT}/app/Subtopologies/GroundLink")
     add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/Components")
     add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/Top")
 
@@ -155,6 +156,8 @@ macro(kit_deployment)
             "${KIT_ROOT}/app/src/HeapMonitor.cpp"
             "${KIT_ROOT}/app/src/RamFs.cpp"
             "${KIT_ROOT}/app/src/Restart.cpp"
+            "${KIT_ROOT}/app/src/Deployment.cpp"
+            "${KIT_ROOT}/app/Subtopologies/GroundLink/GroundLink.cpp"
             ${KIT_MODEL_SOURCES}
         DEPENDS
             ${KIT_TOPOLOGY_MODULE}

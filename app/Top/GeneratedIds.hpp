@@ -3,7 +3,7 @@
 // \title  GeneratedIds.hpp
 // \brief  Opcodes and event IDs of the deployment's services the kit needs
 //         by name: its dispatcher's, health's and version's (the kit's
-//         instruments' are app/Instruments/InstrumentIds.hpp)
+//         instruments' are app/Subtopologies/Instruments/InstrumentIds.hpp)
 //
 // FPP generates them as protected members of each component base. These
 // derived types (never instantiated) make the few the kit uses readable

@@ -11,6 +11,7 @@
 // dispatcher) and nothing of a model: each execution model checks that the
 // topology fits it in its own folder (<model>/ModelChecks.cpp).
 // ======================================================================
+#include "app/Subtopologies/GroundLink/FppConstantsAc.hpp"
 #include "app/Top/ActiveStacks.hpp"
 #include "app/Top/FppConstantsAc.hpp"
 #include "app/Top/KitTopology.hpp"

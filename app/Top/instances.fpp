@@ -89,34 +89,6 @@ module Kit {
     constant fileQueueDepth = 1
   }
 
-  @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:
-  @ F´'s defaults are sized for a Linux host)
-  module Link {
-    @ Packets each downlink queue holds while the link is busy
-    constant eventDepth = 8
-    constant telemetryDepth = 4
-    @ One pool for every link buffer: a frame of the largest packet
-    @ (FW_COM_BUFFER_MAX_SIZE plus the F´ frame's 8 B header and 4 B CRC)
-    @ and the UART's receive chunks
-    constant bufferSize = 160
-    @ The pool's buffers where the build has the file uplink: a frame of
-    @ fprime-gds's largest file packet (its uplinker's 256 B of data, the
-    @ data packet's 11 B header and the 2 B packet descriptor, in F´'s
-    @ 12 B frame: 281 B), rounded to the allocator's 8 B
-    constant fileFrameSize = 288
-    constant bufferCount = 6
-    @ Uplink bytes the frame accumulator holds while a frame arrives
-    @ (in the dictionary: the ground tools need it)
-    dictionary constant accumulatorSize = 320
-    @ The BufferManager's ID, written into the buffers it hands out
-    constant bufferManagerId = 1
-    @ Ground commands the dispatcher may hold at once (LinkHealth drops
-    @ more, counted): a fuzzing batch's worth, four and its NO_OP
-    constant commandsInFlight = 5
-    # The link's line rate is the link UART's devicetree current-speed
-    # (boards/<board>/app.overlay): one place, read by the firmware
-    # (KitTopology.cpp) and printed on its LINK line for the ground tools
-  }
 
   # ----------------------------------------------------------------------
   # Active components. F´'s generated startTasks() starts them in name order,
@@ -137,13 +109,7 @@ module Kit {
 
   # tlmSend, the telemetry store: app/Top/telemetry/ (CONFIG_KIT_TELEMETRY_LINEAR)
 
-  # load, the background load: the kit's instruments (app/Instruments/)
-
-  @ The downlink's queue: events before telemetry, one packet on the wire at a time
-  instance comQueue: Svc.ComQueue base id 0x2000 \
-    queue size Queues.comQueue \
-    stack size Stacks.comQueue \
-    priority Priorities.comQueue
+  # load, the background load: the kit's instruments (app/Subtopologies/Instruments/)
 
   # ----------------------------------------------------------------------
   # Queued components
@@ -278,24 +244,7 @@ module Kit {
 
   instance fatalHandler: Kit.FatalHandler base id 0x0A00
 
-  # The ground link: F´'s ComFprime chain (Svc/Subtopologies/ComFprime), on
-  # fprime-zephyr's UART driver for the board's link UART
-  # (chosen kit,link-uart in boards/<board>/app.overlay)
-  instance framer: Svc.FprimeFramer base id 0x2100
-
-  instance comStub: Svc.ComStub base id 0x2200
-
-  instance frameAccumulator: Svc.FrameAccumulator base id 0x2300
-
-  instance deframer: Svc.FprimeDeframer base id 0x2400
-
-  instance router: Svc.FprimeRouter base id 0x2500
-
-  instance linkBuffers: Svc.BufferManager base id 0x2600
-
-  instance linkUart: Zephyr.ZephyrUartDriver base id 0x2700
-
-  @ What the uplink rejected, by reason (F´'s chain drops some silently)
-  instance linkHealth: Kit.LinkHealth base id 0x2800
+  # The ground link (comQueue, framer ... linkUart, linkHealth) is the
+  # kit's: app/Subtopologies/GroundLink/
 
 }

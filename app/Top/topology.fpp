@@ -17,19 +17,14 @@ module Kit {
     instance osTime
     instance fatalAdapter
     instance fatalHandler
-    instance comQueue
-    instance framer
-    instance comStub
-    instance frameAccumulator
-    instance deframer
-    instance router
-    instance linkBuffers
-    instance linkUart
-    instance linkHealth
 
     # The kit's instruments: timing, the scripted uplink, the downlink's
-    # tally, the background load, faults (app/Instruments/)
+    # tally, the background load, faults (app/Subtopologies/Instruments/)
     import Instruments
+
+    # The ground link: F´'s ComFprime chain on the board's link UART
+    # (app/Subtopologies/GroundLink/)
+    import GroundLink
 
     # The command dispatcher in the build's form, with the connection only
     # that form has (app/Top/dispatcher/)
@@ -109,57 +104,18 @@ module Kit {
     }
 
     # Events and telemetry pass the kit's tally (Downlink) on their way to
-    # the link: events before telemetry, framed, written to the link UART
-    connections Downlink {
+    # the ground link: events before telemetry
+    connections LinkFeeds {
       events.PktSend -> downlink.comIn[0]
       tlmSend.PktSend -> downlink.comIn[1]
-      downlink.comOut[0] -> comQueue.comPacketQueueIn[0]
-      downlink.comOut[1] -> comQueue.comPacketQueueIn[1]
-
-      comQueue.dataOut -> framer.dataIn
-      framer.dataReturnOut -> comQueue.dataReturnIn
-      framer.comStatusOut -> comQueue.comStatusIn
-      framer.bufferAllocate -> linkBuffers.bufferGetCallee
-      framer.bufferDeallocate -> linkBuffers.bufferSendIn
-
-      framer.dataOut -> comStub.dataIn
-      comStub.dataReturnOut -> framer.dataReturnIn
-      comStub.comStatusOut -> framer.comStatusIn
-      comStub.drvSendOut -> linkUart.$send
-      linkUart.ready -> comStub.drvConnected
     }
 
-    # Bytes from the ground: the UART's chunks are accumulated into frames,
-    # checked and unwrapped, and commands go to the dispatcher like the
-    # scripted uplink's
-    connections GroundUplink {
-      linkUart.allocate -> linkBuffers.bufferGetCallee
-      linkUart.deallocate -> linkBuffers.bufferSendIn
-      linkUart.$recv -> comStub.drvReceiveIn
-      comStub.drvReceiveReturnOut -> linkUart.recvReturnIn
-
-      comStub.dataOut -> frameAccumulator.dataIn
-      frameAccumulator.dataReturnOut -> comStub.dataReturnIn
-      frameAccumulator.bufferAllocate -> linkBuffers.bufferGetCallee
-      frameAccumulator.bufferDeallocate -> linkBuffers.bufferSendIn
-
-      frameAccumulator.dataOut -> deframer.dataIn
-      deframer.dataReturnOut -> frameAccumulator.dataReturnIn
-      deframer.dataOut -> router.dataIn
-      router.dataReturnOut -> deframer.dataReturnIn
-      router.bufferAllocate -> linkBuffers.bufferGetCallee
-      router.bufferDeallocate -> linkBuffers.bufferSendIn
-
-      # Ground commands pass the link's health component, which keeps no
-      # more in flight than the dispatcher's queue can hold
-      router.commandOut -> linkHealth.commandIn
+    # Ground commands, past the link's health component (which keeps no
+    # more in flight than the dispatcher's queue can hold), go to the
+    # dispatcher like the scripted uplink's
+    connections LinkCommands {
       linkHealth.commandOut -> cmdDisp.seqCmdBuff[1]
       cmdDisp.seqCmdStatus[1] -> linkHealth.commandStatusIn
-      linkHealth.commandStatusOut -> router.cmdResponseIn
-
-      # Packets of a type the router does not route are counted, not lost
-      router.unknownDataOut -> linkHealth.unknownIn
-      linkHealth.unknownReturnOut -> router.fileBufferReturnIn
     }
 
     connections Faults {

@@ -9,7 +9,7 @@
 // the scenario gets past the assert, the fatal path is broken: it FAILs.
 // ======================================================================
 #include "Top/KitTopology.hpp"
-#include "app/Instruments/InstrumentIds.hpp"
+#include "app/Subtopologies/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Fatal.hpp"
 #include "app/src/Session.hpp"

@@ -11,7 +11,7 @@
 // ======================================================================
 #include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
-#include "app/Instruments/InstrumentIds.hpp"
+#include "app/Subtopologies/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

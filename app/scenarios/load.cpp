@@ -15,7 +15,7 @@
 //          cycle, each that long (a telemetry or serial burst).
 // ======================================================================
 #include "Top/KitTopology.hpp"
-#include "app/Instruments/InstrumentIds.hpp"
+#include "app/Subtopologies/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

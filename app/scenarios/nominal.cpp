@@ -5,7 +5,7 @@
 //         CONFIG_KIT_RUN_TICKS ticks, with a short command script
 // ======================================================================
 #include "Top/KitTopology.hpp"
-#include "app/Instruments/InstrumentIds.hpp"
+#include "app/Subtopologies/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
 #include "app/src/Session.hpp"

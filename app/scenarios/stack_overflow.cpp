@@ -10,7 +10,7 @@
 // the scenario gets past the overflow, nothing detected it: the run FAILs.
 // ======================================================================
 #include "Top/KitTopology.hpp"
-#include "app/Instruments/InstrumentIds.hpp"
+#include "app/Subtopologies/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Fatal.hpp"
 #include "app/src/Session.hpp"

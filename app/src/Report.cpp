@@ -9,6 +9,7 @@
 #include "Top/KitTopology.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
+#include "app/Subtopologies/GroundLink/GroundLink.hpp"
 #include "app/src/HeapMonitor.hpp"
 #include "app/src/RamFs.hpp"
 
@@ -156,8 +157,8 @@ void linkReady() {
     // The line rate paces the ground tools' bytes; uart_errors says whether
     // the UART's receive errors can be counted on this board
     printk("KIT LINK ready uart=%s baud=%u uart_errors=%s dictionary=%s\n",
-           DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name, static_cast<unsigned>(linkBaudRate()),
-           linkUartErrorsReported() ? "reported" : "unsupported", KIT_DICTIONARY_ID);
+           DEVICE_DT_GET(DT_CHOSEN(kit_link_uart))->name, static_cast<unsigned>(GroundLink::baudRate()),
+           GroundLink::uartErrorsReported() ? "reported" : "unsupported", KIT_DICTIONARY_ID);
 }
 
 void fileSystem(RamFs::Mount mount) {
@@ -302,7 +303,7 @@ bool heap(const CountingAllocator& allocator) {
         static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
         static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
         static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE),
-        static_cast<unsigned>(linkBufferBytes()));
+        static_cast<unsigned>(GroundLink::bufferBytes()));
     return HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
 }
 

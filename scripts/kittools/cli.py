@@ -27,6 +27,11 @@ from kittools.suite import budget
 from kittools.workspace import KIT_ROOT, KitError
 
 
+def add_deployment_option(command: argparse.ArgumentParser, what: str) -> None:
+    command.add_argument("--deployment", metavar="DIR",
+                         help=f"{what} (default: the reference one, app/; docs/your-deployment.md)")
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(prog="kit", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = top.add_subparsers(dest="command", required=True)
@@ -35,8 +40,7 @@ def parser() -> argparse.ArgumentParser:
                    help="board to compare on (repeatable; default: every platform of the suite)")
     p.add_argument("--output", help="build folders, logs, results (default: build/compare, or "
                    "build/compare-<folder> for --deployment)")
-    p.add_argument("--deployment", metavar="DIR",
-                   help="the F´ deployment to measure (default: the reference one, app/; docs/your-deployment.md)")
+    add_deployment_option(p, "the F´ deployment to measure")
     variants.add_model_option(p, "the variants to compare (repeatable; default: every one)", repeatable=True)
     p.set_defaults(func=compare.run)
     r = sub.add_parser("report", help="report of results files (build/compare/<board>/comparison.json)")
@@ -82,6 +86,7 @@ def parser() -> argparse.ArgumentParser:
     g = sub.add_parser("gds", help="boot a board and model under QEMU with fprime-gds on its ground link")
     g.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
     variants.add_model_option(g, "default: rtos", default="rtos")
+    add_deployment_option(g, "the F´ deployment to boot")
     g.add_argument("--port", type=int, default=5000, help="the GDS web page's port (default: 5000)")
     g.add_argument("--dictionary", type=Path, default=None,
                    help="the F´ dictionary to give fprime-gds (default: the build's own; refused unless it is "
@@ -91,6 +96,7 @@ def parser() -> argparse.ArgumentParser:
                                             "and model, through its ground link under QEMU")
     w.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
     variants.add_model_option(w, "default: rtos", default="rtos")
+    add_deployment_option(w, "the F´ deployment to sweep")
     w.set_defaults(func=serial_sweep.run)
     d = sub.add_parser("sizediff", help="symbols added, removed, grown and shrunk between two builds (as "
                                         "bloat-o-meter): build folders, or results files / baselines")

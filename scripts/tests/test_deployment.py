@@ -82,3 +82,21 @@ def test_a_builds_conditions_name_its_deployment(tmp_path: Path):
     assert conditions.deployment(BuildFolder(build)) == "tests/mine"
     (build / "CMakeCache.txt").write_text("CMAKE_BUILD_TYPE:STRING=\n")
     assert conditions.deployment(BuildFolder(build)) == "unknown"
+
+
+@pytest.mark.parametrize("command", ["compare", "gds", "serial-sweep"])
+def test_the_measuring_commands_take_a_deployment(command: str):
+    from kittools import cli
+
+    args = cli.parser().parse_args([command, "--deployment", "tests/mine"])
+    assert args.deployment == "tests/mine"
+    assert cli.parser().parse_args([command]).deployment is None  # the reference
+
+
+def test_a_deployments_ground_build_has_a_folder_of_its_own(inside_kit: Path):
+    from kittools.link import ground
+
+    mine = deployment.resolve(_seam(inside_kit / "mine"))
+    reference = ground.ground_build_dir("qemu_cortex_m3", "rtos")
+    assert reference == ground.ground_build_dir("qemu_cortex_m3", "rtos", deployment.resolve(None))
+    assert ground.ground_build_dir("qemu_cortex_m3", "rtos", mine) == reference.with_name(reference.name + "-mine")

@@ -7,7 +7,7 @@ import argparse
 import time
 from pathlib import Path
 
-from kittools import variants
+from kittools import deployment, variants
 from kittools.link import ground
 from kittools.log import say
 from kittools.suite import platforms
@@ -20,10 +20,11 @@ def ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
     platforms.check_runs_here(args.board)
     variants.get(args.model)  # argparse checks the name only when it comes from the command line
     check_provisioned()
-    build_dir = ground.ground_build_dir(args.board, args.model)
+    chosen = deployment.resolve(args.deployment)
+    build_dir = ground.ground_build_dir(args.board, args.model, chosen)
     logs = build_dir.with_name(build_dir.name + "-logs")
-    say(f"building {args.board} {args.model} (ground scenario) ...")
-    ground.build_ground(args.board, args.model, logs / "build.log")
+    say(f"building {args.board} {args.model} of deployment {chosen.name} (ground scenario) ...")
+    ground.build_ground(args.board, args.model, logs / "build.log", chosen)
     return build_dir, logs
 
 

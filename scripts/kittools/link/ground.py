@@ -26,6 +26,7 @@ from pathlib import Path
 from kittools import variants
 from kittools.build.folder import BuildFolder, kit_kconfig_digest
 from kittools.build.runner import Qemu, asks_at_boot, ends_run
+from kittools.deployment import Deployment
 from kittools.link.client import line_rate
 from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
 
@@ -235,23 +236,26 @@ class GroundStation:
         shutil.rmtree(self._transport_dir, ignore_errors=True)
 
 
-def ground_build_dir(board: str, variant: str) -> Path:
-    """Where `kit gds` builds a board and variant's ground scenario (its logs
-    go beside it, `<folder>-logs`)."""
-    return KIT_ROOT / "build" / f"gds-{board_dir_name(board)}-{variant}"
+def ground_build_dir(board: str, variant: str, chosen: Deployment | None = None) -> Path:
+    """Where `kit gds` builds a board and variant's ground scenario, of the
+    reference deployment or `chosen` (its logs go beside it, `<folder>-logs`)."""
+    suffix = chosen.output_suffix() if chosen else ""
+    return KIT_ROOT / "build" / f"gds-{board_dir_name(board)}-{variant}{suffix}"
 
 
-def build_ground(board: str, variant: str, log: Path) -> Path:
+def build_ground(board: str, variant: str, log: Path, chosen: Deployment | None = None) -> Path:
     """Build (or bring up to date) the ground scenario of a board and variant
-    (app/variants.yaml) with west, as a user would; returns the build folder."""
-    build_dir = ground_build_dir(board, variant)
+    (app/variants.yaml), of the reference deployment or `chosen`, with west,
+    as a user would; returns the build folder."""
+    build_dir = ground_build_dir(board, variant, chosen)
     # A folder built before the kit's Kconfig defaults changed keeps its old
     # values (a heap arena too small for a new service faulted at boot)
     folder = BuildFolder(build_dir)
     kconfig = kit_kconfig_digest()
     folder.take_kconfig_defaults(kconfig)
     command = ["west", "build", "-b", board, "-d", str(build_dir), str(KIT_ROOT / "app"), "--",
-               *variants.get(variant).cmake_args(), "-DCONFIG_KIT_SCENARIO_GROUND=y"]
+               *variants.get(variant).cmake_args(), "-DCONFIG_KIT_SCENARIO_GROUND=y",
+               *(chosen.cmake_args() if chosen else [])]
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as output:
         code = subprocess.run(command, cwd=KIT_ROOT, env=environment(), stdout=output,

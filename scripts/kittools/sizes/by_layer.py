@@ -41,12 +41,12 @@ UNATTRIBUTED = "unattributed"
 CATEGORIES = (FRAMEWORK, SERVICES, HEALTH_VERSION, FILE_HANDLING, SEQUENCER, GROUND_LINK, OS_LAYER, INSTRUMENTS, KIT,
               ZEPHYR, LIBC, LIBSTDCXX, UNATTRIBUTED)
 
-# The components of the ground link (app/Top/instances.fpp): F´'s ComFprime
+# The components of the ground link (app/Subtopologies/GroundLink/GroundLink.fpp): F´'s ComFprime
 # chain and fprime-zephyr's UART driver, by folder and by class name
 _LINK_COMPONENTS = ("ComQueue", "FprimeFramer", "FprimeDeframer", "FrameAccumulator", "FprimeRouter", "ComStub",
                     "BufferManager", "ZephyrUartDriver", "FprimeFrameDetector")
 
-# ... and the link's instances in the topology (app/Top/instances.fpp), whose
+# ... and the link's instances (app/Subtopologies/GroundLink/GroundLink.fpp), whose
 # objects hold the link's static RAM (the UART's receive ring among them)
 _LINK_INSTANCES = ("comQueue", "framer", "comStub", "frameAccumulator", "deframer", "router", "linkBuffers",
                    "linkUart", "linkHealth")
@@ -99,6 +99,8 @@ _BY_PATH = (
     *((f"/Os/Baremetal/{name}.", FILE_HANDLING) for name in ("File", "FileSystem", "Directory", "DefaultFile",
                                                              "error")),
     ("/app/src/RamFs.", FILE_HANDLING),
+    # The kit's ground link subtopology's setup (its instances are the chain's)
+    ("/app/Subtopologies/GroundLink/", GROUND_LINK),
     *((f"/app/Components/{name}/", INSTRUMENTS) for name in _INSTRUMENT_COMPONENTS),
     ("/app/src/", INSTRUMENTS),
     ("/app/scenarios/", INSTRUMENTS),
