@@ -5,8 +5,9 @@
 # folder holds F´'s usual three parts, each an F´ CMake folder:
 #   config/       its F´ configuration (register_fprime_config)
 #   Components/   its own components
-#   Top/          its topology, which imports the kit's instruments
-#                 (`import Instruments` in module Kit, app/Subtopologies/Instruments/)
+#   Top/          its topology, which imports the kit's instruments and
+#                 ground link (`import Kit.Instruments`, `import Kit.GroundLink`:
+#                 app/Subtopologies/)
 # A folder that is not one is refused here, before Zephyr configures, with
 # the one thing it lacks.
 # ======================================================================
@@ -30,20 +31,24 @@ function(kit_check_deployment DIR)
                 "${KIT_SEAM_DOC}")
         endif()
     endforeach()
-    # The topology must import the kit's instruments: without them nothing
-    # is measured, and F´ would only fail later on a missing instance
+    # The topology must import the kit's instruments and its ground link:
+    # without them nothing is measured, and F´ or the linker would only fail
+    # later on a missing instance
     file(GLOB_RECURSE KIT_TOPOLOGY_FILES "${DIR}/Top/*.fpp")
-    set(KIT_IMPORTS_INSTRUMENTS OFF)
-    foreach(KIT_FILE IN LISTS KIT_TOPOLOGY_FILES)
-        file(STRINGS "${KIT_FILE}" KIT_IMPORT REGEX "^[ \t]*import[ \t]+(Kit\\.)?Instruments[ \t]*(#.*)?$")
-        if(KIT_IMPORT)
-            set(KIT_IMPORTS_INSTRUMENTS ON)
+    foreach(KIT_SUBTOPOLOGY IN ITEMS Instruments GroundLink)
+        set(KIT_IMPORTED OFF)
+        foreach(KIT_FILE IN LISTS KIT_TOPOLOGY_FILES)
+            file(STRINGS "${KIT_FILE}" KIT_IMPORT
+                REGEX "^[ \t]*import[ \t]+(Kit\\.)?${KIT_SUBTOPOLOGY}[ \t]*(#.*)?$")
+            if(KIT_IMPORT)
+                set(KIT_IMPORTED ON)
+            endif()
+        endforeach()
+        if(NOT KIT_IMPORTED)
+            message(FATAL_ERROR "kit: the topology of '${DIR}' does not import the kit's ${KIT_SUBTOPOLOGY} "
+                "subtopology: add `import Kit.${KIT_SUBTOPOLOGY}` to its topology (Top/*.fpp). ${KIT_SEAM_DOC}")
         endif()
     endforeach()
-    if(NOT KIT_IMPORTS_INSTRUMENTS)
-        message(FATAL_ERROR "kit: the topology of '${DIR}' does not import the kit's instruments: add "
-            "`import Kit.Instruments` to its topology (Top/*.fpp). ${KIT_SEAM_DOC}")
-    endif()
 endfunction()
 
 # The same check from the kit's commands, before any build starts:

@@ -28,7 +28,10 @@ def inside_kit() -> Iterator[Path]:
     shutil.rmtree(folder, ignore_errors=True)
 
 
-def _seam(folder: Path, topology: str = "module Kit {\n  topology Mine {\n    import Instruments\n  }\n}\n") -> Path:
+SEAM_TOPOLOGY = "module Kit {\n  topology Mine {\n    import Instruments\n    import GroundLink\n  }\n}\n"
+
+
+def _seam(folder: Path, topology: str = SEAM_TOPOLOGY) -> Path:
     for part in ("config", "Components", "Top"):
         (folder / part).mkdir(parents=True, exist_ok=True)
         (folder / part / "CMakeLists.txt").write_text("")
@@ -50,7 +53,7 @@ def test_a_deployment_with_the_seam_passes_and_is_named_by_its_folder(inside_kit
 
 
 def test_a_topology_may_import_the_instruments_by_their_qualified_name(inside_kit: Path):
-    topology = "module Mine {\n  topology Mine {\n    import Kit.Instruments  # the kit's\n  }\n}\n"
+    topology = "module Mine {\n  topology Mine {\n    import Kit.Instruments  # the kit's\n    import Kit.GroundLink\n  }\n}\n"
     assert deployment.resolve(_seam(inside_kit / "mine", topology)).name.endswith("mine")
 
 
@@ -59,8 +62,10 @@ def test_a_topology_may_import_the_instruments_by_their_qualified_name(inside_ki
     (lambda root: root, "has no config/CMakeLists.txt"),
     (lambda root: _seam(root / "x").joinpath("Top", "CMakeLists.txt").unlink() or root / "x",
      "has no Top/CMakeLists.txt"),
-    (lambda root: _seam(root / "y", "module Y {\n  topology Y {\n  }\n}\n"),
-     "does not import the kit's instruments"),
+    (lambda root: _seam(root / "y", "module Y {\n  topology Y {\n    import Kit.GroundLink\n  }\n}\n"),
+     "does not import the kit's Instruments subtopology"),
+    (lambda root: _seam(root / "z", "module Z {\n  topology Z {\n    import Kit.Instruments\n  }\n}\n"),
+     "does not import the kit's GroundLink subtopology"),
 ])
 def test_a_folder_that_is_not_a_deployment_gets_one_clear_error(inside_kit: Path, make, says):
     with pytest.raises(KitError) as error:
