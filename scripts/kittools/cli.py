@@ -117,6 +117,7 @@ def parser() -> argparse.ArgumentParser:
                                                            "default: fprime-kit)")
     f.add_argument("--toward", default="fprime-default", help="the profile whose values the knobs move to "
                                                               "(default: fprime-default)")
+    add_deployment_option(f, "the F´ deployment to measure")
     f.add_argument("--report-only", action="store_true",
                    help="write the report from the models' last ablations (build/footprint/), building nothing")
     f.add_argument("--knob", action="append", default=[], metavar="TEXT",

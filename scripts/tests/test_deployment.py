@@ -53,7 +53,8 @@ def test_a_deployment_with_the_seam_passes_and_is_named_by_its_folder(inside_kit
 
 
 def test_a_topology_may_import_the_instruments_by_their_qualified_name(inside_kit: Path):
-    topology = "module Mine {\n  topology Mine {\n    import Kit.Instruments  # the kit's\n    import Kit.GroundLink\n  }\n}\n"
+    topology = ("module Mine {\n  topology Mine {\n    import Kit.Instruments  # the kit's\n"
+                "    import Kit.GroundLink\n  }\n}\n")
     assert deployment.resolve(_seam(inside_kit / "mine", topology)).name.endswith("mine")
 
 
@@ -89,7 +90,7 @@ def test_a_builds_conditions_name_its_deployment(tmp_path: Path):
     assert conditions.deployment(BuildFolder(build)) == "unknown"
 
 
-@pytest.mark.parametrize("command", ["compare", "gds", "serial-sweep"])
+@pytest.mark.parametrize("command", ["compare", "gds", "serial-sweep", "footprint"])
 def test_the_measuring_commands_take_a_deployment(command: str):
     from kittools import cli
 

@@ -19,7 +19,7 @@ from kittools.link import client, fuzz, ground
 from kittools.link.gds_adapter import UnixSocketAdapter
 from kittools.workspace import KitError
 
-DEPLOYMENT = fuzz.Deployment(noop=0x500, setpoint=0x1100, opcodes=frozenset({0x500, 0x1100}), accumulator_size=320)
+DEPLOYMENT = fuzz.Deployment(noop=0x500, with_argument=0x1600, opcodes=frozenset({0x500, 0x1600}), accumulator_size=320)
 
 
 def test_fuzzer_frames_are_what_fprime_gds_deframes():

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from kittools import variants
+from kittools import deployment, variants
 from kittools.log import say
 from kittools.sizes import ablation
 from kittools.suite import platforms
@@ -18,16 +18,18 @@ def run(args: argparse.Namespace) -> int:
     models = args.model or list(variants.names())
     for model in models:
         variants.get(model)  # as in ground_build
+    chosen = deployment.resolve(args.deployment)
+    suffix = chosen.output_suffix()
     if not args.report_only:
         check_provisioned()
         for model in models:
-            ablation.run(args.board, model, profile, toward, ablation.out_dir_of(args.board, model, profile), say,
-                         args.knob)
+            ablation.run(args.board, model, profile, toward, ablation.out_dir_of(args.board, model, profile, suffix),
+                         say, args.knob, chosen)
     tables = []
     for model in models:
-        conditions, rows = ablation.load(ablation.out_dir_of(args.board, model, profile) / "footprint.json")
+        conditions, rows = ablation.load(ablation.out_dir_of(args.board, model, profile, suffix) / "footprint.json")
         tables.append(ablation.table(rows, conditions["board"], model, conditions["profile"], conditions["toward"]))
-    files = ablation.write_report(tables, ablation.report_dir_of(args.board, profile))
+    files = ablation.write_report(tables, ablation.report_dir_of(args.board, profile, suffix))
     print(files[0].read_text())
     say(f"footprint report: {', '.join(str(f) for f in files)}")
     return 0

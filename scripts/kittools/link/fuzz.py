@@ -62,7 +62,9 @@ class Deployment:
     """What the fuzzer needs from the build's dictionary."""
 
     noop: int
-    setpoint: int  # an I32 argument: any shorter argument is a format error
+    #: A command with a U32 argument, in any deployment (the kit's load's
+    #: SET_SLICE): any shorter argument is a format error
+    with_argument: int
     opcodes: frozenset[int]
     accumulator_size: int
     #: The dispatcher counts errors in telemetry (F´'s CommandDispatcher; not the passive form)
@@ -75,7 +77,7 @@ class Deployment:
         constants = {c["qualifiedName"]: c["value"] for c in data.get("constants", [])}
         channels = {c["name"] for c in data.get("telemetryChannels", [])}
         try:
-            return Deployment(opcodes["Kit.cmdDisp.CMD_NO_OP"], opcodes["Kit.controller.SET_SETPOINT"],
+            return Deployment(opcodes["Kit.cmdDisp.CMD_NO_OP"], opcodes[ARGUMENT_COMMAND],
                               frozenset(opcodes.values()), int(constants["Kit.Link.accumulatorSize"]),
                               DISPATCHER_ERRORS_CHANNEL in channels)
         except KeyError as missing:
@@ -126,8 +128,8 @@ def invalid_frame(kind: str, rng: random.Random, deployment: Deployment) -> byte
     if kind == "bad_opcode":
         return frame(command(unknown_opcode(rng, deployment), rng.randbytes(rng.randint(0, 8))))
     if kind == "bad_arguments":
-        # SET_SETPOINT takes an I32; fewer bytes cannot be deserialized
-        return frame(command(deployment.setpoint, rng.randbytes(rng.randint(0, 3))))
+        # SET_SLICE takes a U32; fewer bytes cannot be deserialized
+        return frame(command(deployment.with_argument, rng.randbytes(rng.randint(0, 3))))
     raise ValueError(f"unknown kind {kind}")
 
 
@@ -206,6 +208,9 @@ class Outcome:
 
 
 NOOP_EVENT = "Kit.cmdDisp.NoOpReceived"
+#: The command whose arguments the fuzzer gets wrong: the kit's own, so that
+#: it is in every deployment's dictionary
+ARGUMENT_COMMAND = "Kit.load.SET_SLICE"
 # How the dispatcher refuses a command, in either form: an unknown opcode, a
 # packet it cannot read, a command its handler failed (bad arguments)
 DISPATCHER_REFUSALS = ("Kit.cmdDisp.InvalidCommand", "Kit.cmdDisp.MalformedCommand", "Kit.cmdDisp.OpCodeError")

@@ -32,6 +32,7 @@ from typing import Any
 from kittools import console, variants
 from kittools.build import runner
 from kittools.build.folder import FPRIME_SWITCH, BuildFolder
+from kittools.deployment import Deployment
 from kittools.report import render
 from kittools.report.document import CAVEAT, Section, Table, Text
 from kittools.sizes import by_layer
@@ -152,10 +153,11 @@ def build_failure(log: Path) -> str:
 
 
 def _build(board: str, variant: str, profile: str, settings: tuple[str, ...], build_dir: Path, log: Path,
-           cmake_only: bool = False) -> bool:
+           cmake_only: bool = False, chosen_deployment: Deployment | None = None) -> bool:
     command = ["west", "build", "-p", "always", "-b", board, "-d", str(build_dir), "-S", profile,
                *(["--cmake-only"] if cmake_only else []), str(KIT_ROOT / "app"), "--",
-               *variants.get(variant).cmake_args(), *(f"-D{s}" for s in settings)]
+               *variants.get(variant).cmake_args(), *(f"-D{s}" for s in settings),
+               *(chosen_deployment.cmake_args() if chosen_deployment else [])]
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as output:
         output.write(" ".join(command) + "\n")
@@ -183,12 +185,14 @@ def nominal_outcome(text: str) -> tuple[bool, str, dict[str, int]]:
     return passed, note, latency
 
 
-def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path) -> Row:
+def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path,
+             chosen_deployment: Deployment | None = None) -> Row:
     started = time.monotonic()
     slug = _slug(knob.name)
     build_dir = out_dir / slug
     row = Row(knob.name, list(knob.settings), built=_build(board, variant, profile, knob.settings, build_dir,
-                                                            out_dir / f"{slug}.build.log"))
+                                                            out_dir / f"{slug}.build.log",
+                                                            chosen_deployment=chosen_deployment))
     refused = not_taken(knob.settings, BuildFolder(build_dir).kconfig(missing_ok=True)) if row.built else []
     if refused:
         # Measured, it would be the profile again under the knob's name
@@ -240,18 +244,21 @@ def chosen(plan: list[Knob], only: list[str]) -> list[Knob]:
 
 
 def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
-        say: Callable[[str], None], only: list[str] | None = None) -> list[Row]:
+        say: Callable[[str], None], only: list[str] | None = None,
+        chosen_deployment: Deployment | None = None) -> list[Row]:
     """The ablation of one board and variant from `profile`, each knob moved
     toward `toward` (only those `only` names, when given: then the other
-    profile's whole build is left out too)."""
+    profile's whole build is left out too), of the reference deployment or
+    `chosen_deployment`."""
     out_dir.mkdir(parents=True, exist_ok=True)
     say(f"footprint: {board} {variant}: building the profiles {profile} and {toward}")
-    base = _measure(Knob("profile"), board, variant, profile, out_dir)
+    base = _measure(Knob("profile"), board, variant, profile, out_dir, chosen_deployment)
     if not base.built:
         raise KitError(f"the profile {profile} does not build for {board} {variant}: {base.note}")
     # The other profile's values: its configuration is enough (it need not fit)
     other_dir = out_dir / "toward"
-    if not _build(board, variant, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True):
+    if not _build(board, variant, toward, (), other_dir, out_dir / "toward.configure.log", cmake_only=True,
+                  chosen_deployment=chosen_deployment):
         raise KitError(f"the profile {toward} does not configure for {board} {variant}: "
                        f"{out_dir / 'toward.configure.log'}")
     profile_build = BuildFolder(out_dir / "profile")
@@ -260,13 +267,13 @@ def run(board: str, variant: str, profile: str, toward: str, out_dir: Path,
     plan = chosen(plan, only or [])
     rows = [base]
     for index, knob in enumerate(plan[1:], start=1):
-        row = _measure(knob, board, variant, profile, out_dir)
+        row = _measure(knob, board, variant, profile, out_dir, chosen_deployment)
         rows.append(row)
         verdict = "build FAILED" if not row.built else ("nominal PASS" if row.passed else "nominal FAIL")
         say(f"footprint: {index}/{len(plan)} {knob.name}: {verdict}, ROM {row.rom} RAM {row.ram} "
             f"({row.seconds:.0f} s)")
     if not only:  # last, the other profile whole: every knob moved at once
-        rows.append(_measure(Knob(f"profile {toward}"), board, variant, toward, out_dir))
+        rows.append(_measure(Knob(f"profile {toward}"), board, variant, toward, out_dir, chosen_deployment))
         say(f"footprint: profile {toward}: {'built' if rows[-1].built else 'build FAILED'} {rows[-1].note}")
     # "model": the variant, as `kit footprint --model` names it
     (out_dir / "footprint.json").write_text(json.dumps(
@@ -333,9 +340,11 @@ def load(path: Path) -> tuple[dict[str, str], list[Row]]:
     return ({k: str(data[k]) for k in ("board", "model", "profile", "toward")}, rows)
 
 
-def report_dir_of(board: str, profile: str) -> Path:
-    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{profile}-report"
+def report_dir_of(board: str, profile: str, suffix: str = "") -> Path:
+    """Where the report goes; `suffix`: a deployment's (Deployment.output_suffix)."""
+    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{profile}{suffix}-report"
 
 
-def out_dir_of(board: str, model: str, profile: str) -> Path:
-    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{model}-{profile}"
+def out_dir_of(board: str, model: str, profile: str, suffix: str = "") -> Path:
+    """Where a variant's builds go; `suffix`: a deployment's (Deployment.output_suffix)."""
+    return KIT_ROOT / "build" / "footprint" / f"{board_dir_name(board)}-{model}-{profile}{suffix}"
