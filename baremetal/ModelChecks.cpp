@@ -33,12 +33,20 @@ static_assert(ACTIVE_INSTANCE_COUNT <= TimedTask::MAX_TASKS,
 // The budgeted policy never defers a task of at least this priority: the
 // rate groups, the dispatcher (its queue asserts when full) and the
 // downlink (Betaflight's serial task) must be among them, the background
-// load (what the policy is for) must not
-static_assert(static_cast<int>(Priorities::rg10Hz) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
+// load (what the policy is for) must not. The least urgent rate group is
+// the deployment's (RATE_GROUP_PRIORITIES).
+constexpr FwTaskPriorityType leastUrgentRateGroup() {
+    FwTaskPriorityType least = RATE_GROUP_PRIORITIES[0];
+    for (FwTaskPriorityType priority : RATE_GROUP_PRIORITIES) {
+        least = (priority < least) ? priority : least;
+    }
+    return least;
+}
+static_assert(static_cast<int>(leastUrgentRateGroup()) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
                   static_cast<int>(Priorities::cmdDisp) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY &&
                   static_cast<int>(Priorities::comQueue) >= CONFIG_KIT_BUDGET_CRITICAL_PRIORITY,
               "CONFIG_KIT_BUDGET_CRITICAL_PRIORITY would let the budgeted policy defer a rate group, the "
-              "dispatcher or the downlink (Tables.fpp: app/Top, or the board's)");
+              "dispatcher or the downlink (Tables.fpp: the deployment's, or the board's)");
 static_assert(static_cast<int>(Priorities::load) < CONFIG_KIT_BUDGET_CRITICAL_PRIORITY,
               "CONFIG_KIT_BUDGET_CRITICAL_PRIORITY leaves the background load cycle-locked: nothing to budget");
 #endif

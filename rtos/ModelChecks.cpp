@@ -29,15 +29,18 @@ static_assert(static_cast<int>(Priorities::comQueue) > static_cast<int>(Prioriti
               "Tables.fpp (app/Top, or the board's): the downlink (comQueue) must be more urgent than the events "
               "and telemetry services that feed it");
 // The tick thread sits just below the fastest rate group and above every
-// other task (rtos/Kconfig.model says why): a handed-over 1 kHz cycle runs
-// at once, and the tick still hands every slower group its cycle first
-static_assert(zephyrPriority(Priorities::rg1kHz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >= 0 &&
-                  zephyrPriority(Priorities::rg1kHz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) <
+// other task (rtos/Kconfig.model says why): a handed-over cycle of the
+// fastest group runs at once, and the tick still hands every slower group
+// its cycle first (the deployment's RATE_GROUP_PRIORITIES, fastest first)
+static_assert(RATE_GROUP_COUNT >= 2, "the model's tick rules want at least two rate groups");
+static_assert(zephyrPriority(RATE_GROUP_PRIORITIES[0], CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >=
+                      0 &&
+                  zephyrPriority(RATE_GROUP_PRIORITIES[0], CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) <
                       CONFIG_MAIN_THREAD_PRIORITY &&
-                  zephyrPriority(Priorities::rg100Hz, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >
+                  zephyrPriority(RATE_GROUP_PRIORITIES[1], CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY) >
                       CONFIG_MAIN_THREAD_PRIORITY,
-              "Tables.fpp (app/Top, or the board's) and CONFIG_MAIN_THREAD_PRIORITY: only the fastest rate group "
-              "(rg1kHz) may be more urgent than the tick thread");
+              "Tables.fpp (the deployment's, or the board's) and CONFIG_MAIN_THREAD_PRIORITY: only the fastest "
+              "rate group may be more urgent than the tick thread");
 // fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
 static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,
               "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model) must give one slot per active instance");

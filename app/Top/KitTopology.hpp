@@ -14,6 +14,10 @@ namespace Kit {
 //! Rate groups, in the order of the rate group driver's outputs (their
 //! table: KitTopology.cpp)
 constexpr FwIndexType RATE_GROUP_COUNT = 3;
+//! ... and their priorities in the table (Tables.fpp), in the same order:
+//! each model's build-time checks hold them to its rules
+constexpr FwTaskPriorityType RATE_GROUP_PRIORITIES[RATE_GROUP_COUNT] = {Priorities::rg1kHz, Priorities::rg100Hz,
+                                                                        Priorities::rg10Hz};
 
 //! The active instances: events, tlmSend, load, comQueue, and the rate
 //! groups (app/Top/rategroups/) and the dispatcher (app/Top/dispatcher/)
