@@ -38,6 +38,11 @@ kit_require_workspace("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake"
 # its Kconfig.defconfig, sourced by app/Kconfig through this generated file.
 if(NOT DEFINED CONF_FILE)
     set(CONF_FILE "${KIT_ROOT}/app/prj.conf" "${KIT_BOARD_DIR}/kit.conf")
+    # ... and the deployment's own choices, where it makes any (the services
+    # it has: docs/your-deployment.md)
+    if(EXISTS "${KIT_DEPLOYMENT_DIR}/deployment.conf")
+        list(APPEND CONF_FILE "${KIT_DEPLOYMENT_DIR}/deployment.conf")
+    endif()
 endif()
 if(NOT DTC_OVERLAY_FILE)
     set(DTC_OVERLAY_FILE "${KIT_BOARD_DIR}/app.overlay")
@@ -167,9 +172,8 @@ macro(kit_deployment)
     )
     target_include_directories(app PRIVATE "${KIT_ROOT}")
     # The kit's code reaches the deployment's topology as "Top/...": its
-    # headers, and those F´ generates for it (GeneratedIds.hpp,
-    # FppConstantsAc.hpp: under the build folder, at the deployment's path
-    # in the F´ project)
+    # headers, and those F´ generates for it (FppConstantsAc.hpp: under the
+    # build folder, at the deployment's path in the F´ project)
     file(RELATIVE_PATH KIT_DEPLOYMENT_PATH "${KIT_ROOT}" "${KIT_DEPLOYMENT_DIR}")
     target_include_directories(app PRIVATE "${KIT_DEPLOYMENT_DIR}" "${CMAKE_BINARY_DIR}/${KIT_DEPLOYMENT_PATH}")
     if(NOT KIT_SUB_BUILD)

@@ -8,7 +8,7 @@
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Subtopologies/GroundLink/GroundLink.hpp"
-#include "app/Top/GeneratedIds.hpp"
+#include "app/src/ServiceIds.hpp"
 
 namespace Kit {
 

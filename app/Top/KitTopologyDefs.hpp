@@ -7,7 +7,7 @@
 #define KIT_KITTOPOLOGYDEFS_HPP
 
 #include "app/Top/FppConstantsAc.hpp"
-#include "app/src/CountingAllocator.hpp"
+#include "app/src/TopologyState.hpp"
 
 namespace Kit {
 //! Health cycles (its rate group's: 10 Hz) an answer may take before
@@ -53,14 +53,5 @@ namespace Kit_cmdSeqPing {
 enum { WARN = Kit::PING_WARN_CYCLES, FATAL = Kit::PING_FATAL_CYCLES };
 }
 }  // namespace PingEntries
-
-namespace Kit {
-//! What the topology's setup needs from main: the allocator the ground
-//! link's queues and buffers come from (F´'s are registered with it too;
-//! it counts, so the link's share is known)
-struct TopologyState {
-    CountingAllocator& allocator;
-};
-}  // namespace Kit
 
 #endif

@@ -9,11 +9,11 @@
 // system running: every rate group still completes every cycle, and a
 // valid command after the faults is still answered OK.
 // ======================================================================
-#include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
 #include "app/Subtopologies/Instruments/InstrumentIds.hpp"
 #include "app/scenarios/Scenario.hpp"
 #include "app/src/Report.hpp"
+#include "app/src/ServiceIds.hpp"
 #include "app/src/Session.hpp"
 
 #include <zephyr/sys/printk.h>

@@ -5,13 +5,13 @@
 // ======================================================================
 #include "app/src/Report.hpp"
 #include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
-#include "Top/GeneratedIds.hpp"
 #include "Top/KitTopology.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Subtopologies/GroundLink/GroundLink.hpp"
 #include "app/src/HeapMonitor.hpp"
 #include "app/src/RamFs.hpp"
+#include "app/src/ServiceIds.hpp"
 
 #include <zephyr/device.h>
 #include <zephyr/devicetree.h>

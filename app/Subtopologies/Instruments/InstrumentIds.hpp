@@ -6,8 +6,7 @@
 // FPP generates them as protected members of each component base. These
 // derived types (never instantiated) make the few the kit uses readable
 // without hard-coding numbers; add the instance's base ID to get the global
-// ID. The deployment's own (its dispatcher's, health's, version's) are its
-// Top/GeneratedIds.hpp.
+// ID. F´'s services' are app/src/ServiceIds.hpp.
 // ======================================================================
 #ifndef KIT_INSTRUMENTIDS_HPP
 #define KIT_INSTRUMENTIDS_HPP

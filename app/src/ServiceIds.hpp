@@ -1,19 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
-// \title  GeneratedIds.hpp
-// \brief  Opcodes and event IDs of the deployment's services the kit needs
-//         by name: its dispatcher's, health's and version's (the kit's
-//         instruments' are app/Subtopologies/Instruments/InstrumentIds.hpp)
+// \title  ServiceIds.hpp
+// \brief  Opcodes and event IDs of F´'s services the kit needs by name: the
+//         dispatcher's (in the form the build chose), health's and
+//         version's (the kit's instruments' are
+//         app/Subtopologies/Instruments/InstrumentIds.hpp)
 //
 // FPP generates them as protected members of each component base. These
 // derived types (never instantiated) make the few the kit uses readable
 // without hard-coding numbers; add the instance's base ID to get the global ID.
 // ======================================================================
-#ifndef KIT_GENERATEDIDS_HPP
-#define KIT_GENERATEDIDS_HPP
+#ifndef KIT_SERVICEIDS_HPP
+#define KIT_SERVICEIDS_HPP
 
-// The dispatcher in the build's form (app/Top/dispatcher/): the same
-// opcodes and event IDs in both
+// The dispatcher in the build's form (CONFIG_KIT_CMD_DISPATCHER_PASSIVE):
+// the same opcodes and event IDs in both
 #if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
 #include "fprime-baremetal/Svc/PassiveCmdDispatcher/PassiveCmdDispatcherComponentAc.hpp"
 #else
