@@ -30,24 +30,36 @@ namespace {
 
 // A settle segment lets a new setting reach the load (the command is
 // dispatched in the first 10 Hz cycle) and the queues reach steady state;
-// the measured segment follows. Both last whole hyperperiods (asserted).
-constexpr U32 SETTLE_TICKS = 100;
-constexpr U32 MEASURE_TICKS = 200;
+// the measured segment follows. Both last whole hyperperiods (asserted):
+// at least these many ticks, rounded up to the deployment's hyperperiod
+constexpr U32 SETTLE_TICKS_MIN = 100;
+constexpr U32 MEASURE_TICKS_MIN = 200;
 constexpr U32 BURST_MESSAGES = 8;  // fits the load's queue (Queues.load)
+
+U32 wholeHyperperiods(U32 ticks) {
+    const U32 period = Session::hyperperiod();
+    return ((ticks + period - 1) / period) * period;
+}
 
 struct Axis {
     const char* name;
-    U32 stepUs;
-    U32 points;  //!< loads 0, step, ..., (points - 1) x step
+    U32 stepsPerPeriod;  //!< the step: the fastest group's period over this
+    U32 points;          //!< loads 0, step, ..., (points - 1) x step
     bool burst;
 };
-// Both reach twice the fastest period (2 ms at 1 kHz); the slice axis in
-// steps fine enough to place the knee within 100 us
+// Both reach twice the fastest group's period (2 ms at 1 kHz); the slice
+// axis in steps fine enough to place the knee within a tenth of it
 const Axis AXES[] = {
-    {"slice", 100, 21, false},
-    {"burst", 250, 9, true},
+    {"slice", 10, 21, false},
+    {"burst", 4, 9, true},
 };
 constexpr U32 NO_BREAK = 0xFFFFFFFFu;
+
+// An axis' step, from the deployment's fastest rate group (RATE_GROUPS[0])
+U32 stepUs(const Axis& axis) {
+    constexpr U32 TICK_US = 1000000U / CONFIG_KIT_TICK_HZ;
+    return RATE_GROUPS[0].divisor * TICK_US / axis.stepsPerPeriod;
+}
 
 Uplink::Frame loadCommand(const Axis& axis, U32 us) {
     const FwOpcodeType base = load.getIdBase();
@@ -76,24 +88,26 @@ bool sweep(const Axis& axis, U32 breakUs[], HealthOnAxis& health) {
     for (FwIndexType i = 0; i < RATE_GROUP_COUNT; i++) {
         breakUs[i] = NO_BREAK;
     }
+    const U32 settleTicks = wholeHyperperiods(SETTLE_TICKS_MIN);
+    const U32 measureTicks = wholeHyperperiods(MEASURE_TICKS_MIN);
     for (U32 point = 0; point < axis.points; point++) {
-        const U32 us = point * axis.stepUs;
+        const U32 us = point * stepUs(axis);
         Uplink::Frame frame = loadCommand(axis, us);
         uplink.play(&frame, 1);
-        Session::run(SETTLE_TICKS);
+        Session::run(settleTicks);
         commanded = commanded && frame.asExpected();
         Session::nextSegment();
         Report::startHealthSegment();
         const U32 processedBefore = load.processed();
         const U32 droppedBefore = load.dropped();
-        Session::run(MEASURE_TICKS);
+        Session::run(measureTicks);
         bool broke[RATE_GROUP_COUNT] = {};
         const Report::SweepPoint measured = {axis.name,
                                              point,
                                              us,
                                              "us",
                                              axis.burst ? BURST_MESSAGES : 0,
-                                             MEASURE_TICKS,
+                                             measureTicks,
                                              load.processed() - processedBefore,
                                              load.dropped() - droppedBefore};
         Report::sweepPoint(measured, broke);
@@ -112,7 +126,7 @@ bool sweep(const Axis& axis, U32 breakUs[], HealthOnAxis& health) {
     // Back to no load before the next axis
     Uplink::Frame idle = idleCommand(axis);
     uplink.play(&idle, 1);
-    Session::run(SETTLE_TICKS);
+    Session::run(settleTicks);
     Session::nextSegment();
     return commanded && idle.asExpected();
 }

@@ -106,3 +106,34 @@ def test_a_deployments_ground_build_has_a_folder_of_its_own(inside_kit: Path):
     reference = ground.ground_build_dir("qemu_cortex_m3", "rtos")
     assert reference == ground.ground_build_dir("qemu_cortex_m3", "rtos", deployment.resolve(None))
     assert ground.ground_build_dir("qemu_cortex_m3", "rtos", mine) == reference.with_name(reference.name + "-mine")
+
+
+def test_the_second_deployment_passes_the_seam_and_shares_nothing_with_the_reference():
+    """tests/thermal: its own components, its own rates (50, 10 and 1 Hz,
+    declared once in its RATE_GROUPS), none of the reference deployment's
+    components, and the kit's subtopologies imported."""
+    thermal = deployment.resolve(KIT_ROOT / "tests" / "thermal")
+    assert thermal.name == "tests/thermal" and not thermal.is_reference
+    sources = "\n".join(path.read_text() for path in thermal.path.rglob("*") if path.is_file())
+    for reference_own in ("Controller", "Monitor", "Housekeeping", "ParamDefaults", "rg1kHz", "rg100Hz"):
+        assert reference_own not in sources, reference_own
+    table = (thermal.path / "Top" / "KitTopology.cpp").read_text()
+    for rate in ("CONFIG_KIT_TICK_HZ / 50", "CONFIG_KIT_TICK_HZ / 10", "CONFIG_KIT_TICK_HZ / 1,"):
+        assert rate in table
+
+
+def test_ci_plays_the_second_deployment_in_every_model_through_the_seam(monkeypatch, tmp_path: Path):
+    from kittools import variants
+    from kittools.commands import test as kit_test
+    from kittools.suite import twister
+    from kittools.suite.counts import Tally
+
+    calls = []
+    monkeypatch.setattr(twister, "run_twister", lambda *a, **k: calls.append((a, k)) or Tally(4, 0))
+    run = object.__new__(kit_test.FullRun)
+    run.log_dir = tmp_path
+    assert run.second_deployment() == Tally(4, 0)
+    (boards, out_dir, _), options = calls[0]
+    assert boards == ["qemu_cortex_m3"] and out_dir == tmp_path / "deployment-thermal"
+    assert options["models"] == tuple(variants.names()) and options["scenarios"] == ("nominal",)
+    assert options["cmake_args"] == (f"-DKIT_DEPLOYMENT_DIR={KIT_ROOT / 'tests' / 'thermal'}",)

@@ -12,9 +12,10 @@ namespace Kit {
 
 class Load final : public LoadComponentBase {
   public:
-    //! Longest computation one message may be commanded to take: 20 ms, ten
-    //! times the longest the kit's sweep uses, still bounded
-    static constexpr U32 SLICE_MAX_US = 20000;
+    //! Longest computation one message may be commanded to take: 50 ms, what
+    //! the kit's sweep reaches (twice the fastest group's period) for a
+    //! fastest group as slow as 40 Hz, still bounded
+    static constexpr U32 SLICE_MAX_US = 50000;
     //! Most messages one burst may push (the queue holds fewer: a burst above
     //! its depth is how an overrun of the load is provoked)
     static constexpr U32 BURST_MAX = 32;

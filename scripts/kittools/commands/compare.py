@@ -20,9 +20,8 @@ COMPARISON_SCENARIOS = ("nominal", "load")
 #: Where `kit compare` keeps its builds, logs and results (a deployment's: with its name)
 DEFAULT_OUTPUT = str(KIT_ROOT / "build" / "compare")
 
-#: The suite's tag for its footprint profiles' builds (tests/deployment/testcase.yaml),
-#: which `kit compare` leaves out: the comparison is the kit profile's
-PROFILE_TAG = "profile"
+#: The suite's footprint profiles' builds are left out: the comparison is the kit profile's
+PROFILE_TAG = twister.PROFILE_TAG
 
 
 def compare_boards(boards: list[str], out_dir: Path, models: tuple[str, ...] = (),

@@ -11,7 +11,7 @@ import functools
 import threading
 from pathlib import Path
 
-from kittools import variants
+from kittools import deployment, variants
 from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.link import serial_points
 from kittools.suite import (
@@ -30,12 +30,21 @@ from kittools.suite import (
 )
 from kittools.suite.counts import Tally
 from kittools.suite.plan import Plan, settle
-from kittools.workspace import KitError, check_committed, check_provisioned
+from kittools.workspace import KIT_ROOT, KitError, check_committed, check_provisioned
+
+#: The deployment unlike the reference one that CI measures through the seam
+#: (docs/your-deployment.md)
+SECOND_DEPLOYMENT = KIT_ROOT / "tests" / "thermal"
 
 #: kit test --quick: the scenarios every model plays on the reference board
 QUICK_SCENARIOS = ("nominal", "faults", "load")
 #: ... and the integration suite's test each ground station runs (pytest -k)
 QUICK_GROUND_TEST = "test_noop_completes_with_its_events"
+
+
+def last_share(subset: tuple[int, int] | None) -> bool:
+    """This run is the whole run, or the last share of a split one."""
+    return subset is None or subset[0] == subset[1]
 
 
 def subset_of(text: str | None) -> tuple[int, int] | None:
@@ -131,6 +140,18 @@ class FullRun:
         return ground_checks.run_integration(self.log_dir, required=not self.subset,
                                              serial_plays=serial_plays(self.args))
 
+    def second_deployment(self) -> Tally:
+        """The second deployment (tests/thermal), built and played through
+        the seam in every model on the reference board: its nominal run,
+        through twister like the reference's (the whole comparison, with the
+        load sweep, is `kit compare --deployment tests/thermal`: its 1 Hz
+        group makes every sweep point a second long)."""
+        chosen = deployment.resolve(SECOND_DEPLOYMENT)
+        out_dir = self.log_dir / f"deployment{chosen.output_suffix()}"
+        return twister.run_twister([REFERENCE_BOARD], out_dir, out_dir / "twister", scenarios=("nominal",),
+                                   exclude_tags=(twister.PROFILE_TAG,), models=tuple(variants.names()),
+                                   with_floor=False, cmake_args=tuple(chosen.cmake_args()))
+
     def budget(self, board: str) -> Tally:
         self.size_reports.result()
         return verdict.check_budget(board, self.log_dir, budget.of_options(self.args), self.args.update_baseline)
@@ -185,6 +206,9 @@ class FullRun:
             if not subset:
                 steps.add_qemu("report: every board side by side (what fits where)", functools.partial(
                     verdict.report_side_by_side, boards + self.small + self.built_only, self.log_dir))
+            if REFERENCE_BOARD in boards and last_share(subset):
+                steps.add_qemu(f"second deployment: {SECOND_DEPLOYMENT} through the seam, every model on "
+                               f"{REFERENCE_BOARD}, nominal", self.second_deployment)
         # A split run shares out the steps beside twister: the porting check (the
         # longest) to the first shard, the host's and the device path to the
         # last (measured on two shares of today's suite: the porting check took

@@ -163,6 +163,10 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     return tally
 
 
+#: The suite's tag for its footprint profiles' builds (tests/deployment/testcase.yaml),
+#: which a comparison leaves out (kit compare, the second deployment's run)
+PROFILE_TAG = "profile"
+
 #: The twister tag of the builds only the full run makes (kit test --full):
 #: the real boards' builds of a baremetal policy, whose port is the model's
 FULL_RUN_TAG = "full"

@@ -54,19 +54,20 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
     # Passive rate groups have no queue: their path is the tick taken, then
     # the first member (one mark, two stages)
     marks, last_stage = ("1", "taken_to_member") if passive else ("5", "received_to_member")
-    stages = (rf"KIT STAGES rg=rg1kHz complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
+    stages = (rf"KIT STAGES rg=FASTEST complete=[1-9][0-9]* incomplete={'0' if fast_slips == '0' else '[0-9]+'} "
               rf"marks={marks} mark_cycles=[1-9][0-9]*$")
     return [
         rf"KIT BANNER variant={variant} board=\S+ .* tick_hz=1000 .* icount_shift={ICOUNT_SHIFT} ",
         # the RAM file system, where the build has one: a fresh boot formats it
         RAM_FILE_SYSTEM_COLD,
-        rf"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
-        r"KIT RG name=rg100Hz hz=100 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
-        r"KIT RG name=rg10Hz hz=10 cycles=([1-9][0-9]*) expected=\1 slips=0 ",
+        rf"KIT RG name=FASTEST hz=[1-9][0-9]* cycles=([1-9][0-9]*) expected=\1 slips={fast_slips} ",
+        # every slower group: its own check (slower_groups_held), for any
+        # number of them
+        SLOWER_GROUP_HELD,
         # every cycle of the 1 kHz group broken into stages (none missing a
         # mark where none slipped), the probe's cost measured
         stages,
-        rf"KIT STAGE rg=rg1kHz name={last_stage} cycles_min=[1-9]",
+        rf"KIT STAGE rg=FASTEST name={last_stage} cycles_min=[1-9]",
         r"KIT HEAP fprime_peak=[1-9][0-9]* .* after_init=0 failures=0 ",
         r"KIT CMD frame=0 opcode=0x[0-9a-f]+ noop=yes response=OK",
         r"KIT DOWNLINK .* malformed=0 noop_events=1 uncounted=0",
@@ -75,11 +76,36 @@ def _nominal(variant: str, fast_slips: str, passive: bool = False) -> list[str]:
         # firmware fails the run on one never answered), no warning at
         # rest, the versions reported once
         HEALTH_AT_REST,
-        *([] if passive else [r"KIT QUEUE name=rg1kHz depth=2 slot_bytes=[1-9][0-9]* high_water=[12] dropped=0$"]),
+        *([] if passive else [r"KIT QUEUE name=FASTEST depth=2 slot_bytes=[1-9][0-9]* high_water=[12] dropped=0$"]),
         # the downlink and the event service lost nothing to a full queue
         EVENTS_KEPT,
         r"KIT QUEUE name=comQueue depth=[1-9][0-9]* slot_bytes=[1-9][0-9]* high_water=[0-9]+ dropped=0$",
     ]
+
+
+# A slower rate group ran exactly its cycles, without a slip
+SLOWER_GROUP_HELD = r"KIT RG name=(?!FASTEST )\S+ hz=[1-9][0-9]* cycles=([1-9][0-9]*) expected=\1 slips=0 "
+
+# Stands for the deployment's fastest rate group, the first the firmware
+# reports (its RATE_GROUPS, fastest first: app/src/Deployment.hpp)
+FASTEST = "FASTEST"
+FIRST_GROUP = re.compile(r"^KIT (?:RG name=|SWEEP .* rg=)(\S+)")
+
+
+def fastest_group(lines: list[str]) -> str:
+    """The deployment's fastest rate group, as the run names it."""
+    for line in lines:
+        found = FIRST_GROUP.search(line)
+        if found:
+            return found.group(1)
+    return FASTEST  # no group reported: every expectation naming it fails
+
+
+def slower_groups_held(lines: list[str], fastest: str) -> list[str]:
+    """The RG lines of the slower groups that missed a cycle or slipped."""
+    held = re.compile(SLOWER_GROUP_HELD.replace(FASTEST, re.escape(fastest)))
+    return [line for line in lines if line.startswith("KIT RG name=")
+            and not line.startswith(f"KIT RG name={fastest} ") and not held.search(line)]
 
 
 # bulk_bytes: the file downlink's file, 0 where the build has none
@@ -105,7 +131,7 @@ EVENTS_KEPT = r"KIT QUEUE name=events depth=[1-9][0-9]* slot_bytes=[1-9][0-9]* h
 # load's, not an event: every one reached the event service), every cycle
 # still completed, a later NO_OP still OK.
 FAULTS = [
-    r"KIT RG name=rg1kHz hz=1000 cycles=([1-9][0-9]*) expected=\1 slips=[1-9]",
+    r"KIT RG name=FASTEST hz=[1-9][0-9]* cycles=([1-9][0-9]*) expected=\1 slips=[1-9]",
     r"KIT CMD frame=0 .* response=INVALID_OPCODE expected=INVALID_OPCODE",
     r"KIT CMD frame=1 .* response=FORMAT_ERROR expected=FORMAT_ERROR",
     r"KIT CMD frame=2 .* response=FORMAT_ERROR expected=FORMAT_ERROR",
@@ -167,8 +193,8 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
         "nominal": [*_nominal("baremetal", "[0-9]+"), r"KIT END variant=baremetal result=PASS"],
         "load": [
             r"KIT BANNER variant=baremetal ",
-            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz ",
-            r"KIT BREAK axis=slice rg=rg1kHz level=[0-9]+ unit=us$",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=FASTEST ",
+            r"KIT BREAK axis=slice rg=FASTEST level=[0-9]+ unit=us$",
             HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK .* dropped=0",
             r"KIT END variant=baremetal result=PASS",
@@ -181,17 +207,17 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
     "baremetal_budgeted": {
         "nominal": [
             *_nominal("baremetal_budgeted", "[0-9]+"),
-            r"KIT SCHED name=rg1kHz critical=yes anticipated=[1-9][0-9]* deferrals=0 ",
+            r"KIT SCHED name=FASTEST critical=yes anticipated=[1-9][0-9]* deferrals=0 ",
             r"KIT SCHED name=guard guard=[1-9][0-9]* guard_max=[1-9][0-9]*",
             r"KIT END variant=baremetal_budgeted result=PASS",
         ],
         "load": [
             r"KIT BANNER variant=baremetal_budgeted ",
-            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz .* load_dropped=0",
-            r"KIT BREAK axis=slice rg=rg1kHz level=([0-9]+|none) unit=us$",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=FASTEST .* load_dropped=0",
+            r"KIT BREAK axis=slice rg=FASTEST level=([0-9]+|none) unit=us$",
             HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK ",
-            r"KIT SCHED name=rg1kHz critical=yes ",
+            r"KIT SCHED name=FASTEST critical=yes ",
             r"KIT END variant=baremetal_budgeted result=PASS",
         ],
         "faults": FAULTS,
@@ -204,8 +230,8 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
                     r"KIT END variant=baremetal_passive result=PASS"],
         "load": [
             r"KIT BANNER variant=baremetal_passive ",
-            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz ",
-            r"KIT BREAK axis=slice rg=rg1kHz level=([0-9]+|none) unit=us$",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=FASTEST ",
+            r"KIT BREAK axis=slice rg=FASTEST level=([0-9]+|none) unit=us$",
             HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK .* dropped=0",
             r"KIT END variant=baremetal_passive result=PASS",
@@ -219,8 +245,8 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
         "nominal": [*_nominal("rtos", "0"), r"KIT END variant=rtos result=PASS"],
         "load": [
             r"KIT BANNER variant=rtos ",
-            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=rg1kHz .* slips=0 late_starts=0 ",
-            r"KIT BREAK axis=slice rg=rg1kHz level=none unit=us",
+            r"KIT SWEEP axis=slice point=0 level=0 unit=us .* rg=FASTEST .* slips=0 late_starts=0 ",
+            r"KIT BREAK axis=slice rg=FASTEST level=none unit=us",
             HEALTH_ON_THE_LOAD_AXES,
             r"KIT LOAD commands=OK .* dropped=0",
             r"KIT END variant=rtos result=PASS",
@@ -332,7 +358,10 @@ def test_scenario(dut: DeviceAdapter, scenario: str) -> None:
     runs = build / RUNS
     runs.mkdir(exist_ok=True)
     (runs / f"{scenario}.log").write_text("\n".join(prompt + lines) + "\n")
-    missing = unmatched(lines, expected)
+    fastest = fastest_group(lines)
+    missing = unmatched(lines, [pattern.replace(FASTEST, re.escape(fastest)) for pattern in expected])
+    missing += [f"a slower group held its cycles: {line}" for line in slower_groups_held(lines, fastest)
+                if scenario == "nominal"]
     tail = "\n".join(lines[-15:])
     assert ended, f"{variant} {scenario}: no end line within the time-out; last lines:\n{tail}"
     assert not missing, f"{variant} {scenario}: not found, in order: {missing}; last lines:\n{tail}"

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// ======================================================================
+// \title  ActiveStacks.hpp
+// \brief  The stack table's entry of every active instance this build has
+//         (each model sizes its tasks from it: <model>/ModelChecks.cpp)
+// ======================================================================
+#ifndef THERMAL_ACTIVESTACKS_HPP
+#define THERMAL_ACTIVESTACKS_HPP
+
+#include "tests/thermal/Top/KitTopology.hpp"
+
+namespace Kit {
+
+constexpr FwSizeType ACTIVE_STACKS[] = {
+#if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+    Stacks::rg50Hz,  Stacks::rg10Hz,  Stacks::rg1Hz,
+#endif
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    Stacks::cmdDisp,
+#endif
+    Stacks::events,  Stacks::tlmSend, Stacks::load,  Stacks::comQueue,
+};
+constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
+static_assert(ACTIVE_STACK_ENTRIES == ACTIVE_INSTANCE_COUNT, "ACTIVE_STACKS and ACTIVE_INSTANCES disagree");
+
+//! The largest stack of the table's active instances
+constexpr FwSizeType largestActiveStack() {
+    FwSizeType largest = 0;
+    for (FwSizeType stack : ACTIVE_STACKS) {
+        largest = stack > largest ? stack : largest;
+    }
+    return largest;
+}
+
+}  // namespace Kit
+
+#endif
