@@ -50,6 +50,13 @@ U32 hyperperiod() {
 
 namespace {
 
+// The fastest group (RATE_GROUPS[0]) is dispatched at the tick being handed
+// over: the rate group driver's rule, on the ticks the timing probe counts
+bool fastestDue() {
+    const RateGroupSpec& fastest = RATE_GROUPS[0];
+    return (timing.ticksDriven() % fastest.divisor) == fastest.offset;
+}
+
 // The main loop: `ticks` ticks (0: no limit), or, when `until` is given,
 // until it holds at the end of a hyperperiod
 void loop(U32 ticks, bool (*until)()) {
@@ -67,7 +74,11 @@ void loop(U32 ticks, bool (*until)()) {
         // Hand over every tick that fired, in order: a main loop that fell
         // behind shows up as latency and slips, never as lost cycles.
         while (!stop && handled != fired && (ticks == 0 || handled < ticks)) {
-            Stages::tickTaken(TickClock::stampOf(handled));
+            // The stage probe follows the fastest group's dispatch: a tick
+            // that dispatches it (every tick where it runs at the tick rate)
+            if (fastestDue()) {
+                Stages::tickTaken(TickClock::stampOf(handled));
+            }
             timing.tick();
             // The tick just handed over fired at its stamp; the next is due
             // a period later (already past if the loop is behind)
