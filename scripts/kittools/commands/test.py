@@ -207,8 +207,8 @@ class FullRun:
                 steps.add_qemu("report: every board side by side (what fits where)", functools.partial(
                     verdict.report_side_by_side, boards + self.small + self.built_only, self.log_dir))
             if REFERENCE_BOARD in boards and last_share(subset):
-                steps.add_qemu(f"second deployment: {SECOND_DEPLOYMENT} through the seam, every model on "
-                               f"{REFERENCE_BOARD}, nominal", self.second_deployment)
+                steps.add_qemu(f"second deployment: {deployment.label(SECOND_DEPLOYMENT)} through the seam, every "
+                               f"model on {REFERENCE_BOARD}, nominal", self.second_deployment)
         # A split run shares out the steps beside twister: the porting check (the
         # longest) to the first shard, the host's and the device path to the
         # last (measured on two shares of today's suite: the porting check took
