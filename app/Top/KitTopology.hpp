@@ -8,6 +8,7 @@
 #define KIT_KITTOPOLOGY_HPP
 
 #include "app/Top/KitTopologyAc.hpp"
+#include "app/src/ActiveForms.hpp"
 
 namespace Kit {
 
@@ -23,16 +24,7 @@ constexpr FwTaskPriorityType RATE_GROUP_PRIORITIES[RATE_GROUP_COUNT] = {Prioriti
 //! groups (app/Top/rategroups/) and the dispatcher (app/Top/dispatcher/)
 //! where the build has them in their active form, and F´'s services where
 //! the build has them (app/Top/services/)
-#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-constexpr FwSizeType ACTIVE_RATE_GROUPS = 0;
-#else
-constexpr FwSizeType ACTIVE_RATE_GROUPS = 3;
-#endif
-#if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-constexpr FwSizeType ACTIVE_DISPATCHERS = 0;
-#else
-constexpr FwSizeType ACTIVE_DISPATCHERS = 1;
-#endif
+constexpr FwSizeType ACTIVE_RATE_GROUPS = activeRateGroups(RATE_GROUP_COUNT);
 #if defined(CONFIG_KIT_SERVICE_PARAMS)
 constexpr FwSizeType PARAMETER_DATABASES = 1;
 #else

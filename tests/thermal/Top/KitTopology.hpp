@@ -8,6 +8,7 @@
 #ifndef THERMAL_KITTOPOLOGY_HPP
 #define THERMAL_KITTOPOLOGY_HPP
 
+#include "app/src/ActiveForms.hpp"
 #include "tests/thermal/Top/ThermalTopologyAc.hpp"
 
 namespace Kit {
@@ -23,17 +24,7 @@ constexpr FwTaskPriorityType RATE_GROUP_PRIORITIES[RATE_GROUP_COUNT] = {Prioriti
 
 //! The active instances: the rate groups and the dispatcher in their active
 //! form, events, tlmSend, and the kit's load and comQueue
-#if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-constexpr FwSizeType ACTIVE_RATE_GROUPS = 0;
-#else
-constexpr FwSizeType ACTIVE_RATE_GROUPS = 3;
-#endif
-#if defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-constexpr FwSizeType ACTIVE_DISPATCHERS = 0;
-#else
-constexpr FwSizeType ACTIVE_DISPATCHERS = 1;
-#endif
-constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + ACTIVE_RATE_GROUPS + ACTIVE_DISPATCHERS;
+constexpr FwSizeType ACTIVE_INSTANCE_COUNT = 4 + activeRateGroups(RATE_GROUP_COUNT) + ACTIVE_DISPATCHERS;
 
 //! The 10 Hz group: where health would run (this deployment has none)
 constexpr FwIndexType HEALTH_RATE_GROUP = 1;
