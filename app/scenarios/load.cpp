@@ -9,10 +9,15 @@
 // one SWEEP line per rate group; at the end a BREAK line per axis and rate
 // group names the smallest load at which that group missed a deadline.
 // Two axes:
-//   slice  one uninterruptible computation per 100 Hz dispatch (a long,
-//          low-priority job: Betaflight's long serial task);
-//   burst  BURST_MESSAGES messages through the load's queue every 10 Hz
-//          cycle, each that long (a telemetry or serial burst).
+//   slice  one uninterruptible computation per message of the load's
+//          sliceIn (100 Hz in the reference deployment: a long,
+//          low-priority job, Betaflight's long serial task);
+//   burst  a burst of messages through the load's queue per call of its
+//          burstIn (10 Hz in the reference), each message that long (a
+//          telemetry or serial burst).
+// Both axes reach twice the fastest group's period, the level at which a
+// cooperative model must show its break, whatever the deployment's rates;
+// the load stays within half of the CPU at the top (shapeOf).
 // ======================================================================
 #include "Top/KitTopology.hpp"
 #include "app/Subtopologies/Instruments/InstrumentIds.hpp"
@@ -34,7 +39,8 @@ namespace {
 // at least these many ticks, rounded up to the deployment's hyperperiod
 constexpr U32 SETTLE_TICKS_MIN = 100;
 constexpr U32 MEASURE_TICKS_MIN = 200;
-constexpr U32 BURST_MESSAGES = 8;  // fits the load's queue (Queues.load)
+constexpr U32 BURST_MESSAGES_MAX = 8;  // fits the load's queue (Queues.load)
+constexpr U32 TICK_US = 1000000U / CONFIG_KIT_TICK_HZ;
 
 U32 wholeHyperperiods(U32 ticks) {
     const U32 period = Session::hyperperiod();
@@ -43,34 +49,67 @@ U32 wholeHyperperiods(U32 ticks) {
 
 struct Axis {
     const char* name;
-    U32 stepsPerPeriod;  //!< the step: the fastest group's period over this
-    U32 points;          //!< loads 0, step, ..., (points - 1) x step
+    U32 points;  //!< loads 0, step, ..., (points - 1) x step
     bool burst;
 };
-// Both reach twice the fastest group's period (2 ms at 1 kHz); the slice
-// axis in steps fine enough to place the knee within a tenth of it
+// The slice axis in steps fine enough to place the knee within a tenth of
+// the fastest group's period
 const Axis AXES[] = {
-    {"slice", 10, 21, false},
-    {"burst", 4, 9, true},
+    {"slice", 21, false},
+    {"burst", 9, true},
 };
 constexpr U32 NO_BREAK = 0xFFFFFFFFu;
 
-// An axis' step, from the deployment's fastest rate group (RATE_GROUPS[0])
-U32 stepUs(const Axis& axis) {
-    constexpr U32 TICK_US = 1000000U / CONFIG_KIT_TICK_HZ;
-    return RATE_GROUPS[0].divisor * TICK_US / axis.stepsPerPeriod;
+//! An axis' levels and the load's pace along it
+struct Shape {
+    U32 stepUs;
+    U32 messages;  //!< per burst (burst axis), else 0
+    U32 every;     //!< calls of the load's port per slice or burst (Load.SET_PACE)
+};
+
+// The top of every axis: twice the deployment's fastest group's period
+U32 topUs() {
+    return 2U * RATE_GROUPS[0].divisor * TICK_US;
 }
 
-Uplink::Frame loadCommand(const Axis& axis, U32 us) {
+// An axis' shape from the period of the rate group driving its load (its
+// port's calls counted over its first point). At the top the load's work
+// stays within half of the calls' time: past it the load is more than the
+// CPU, every model overflows the load's queue, and the axis would measure
+// that queue, not the scheduling (measured: tests/thermal, a 40 ms slice each
+// 20 ms, dropped 289 messages in its rtos build). So a burst has as many
+// messages as fit, up to BURST_MESSAGES_MAX, and a load that does not fit
+// with one is paced: one slice or burst each `every` calls. The reference
+// deployment's loads (2 ms each 10 ms, 8 x 2 ms each 100 ms) fit unpaced.
+Shape shapeOf(const Axis& axis, U32 periodUs) {
+    const U32 top = topUs();
+    U32 messages = 0;
+    U32 workUs = top;
+    if (axis.burst) {
+        messages = periodUs / (2U * top);
+        messages = (messages < 1U) ? 1U : ((messages > BURST_MESSAGES_MAX) ? BURST_MESSAGES_MAX : messages);
+        workUs = messages * top;
+    }
+    const U32 every = (2U * workUs + periodUs - 1U) / periodUs;
+    return {top / (axis.points - 1U), messages, (every < 1U) ? 1U : every};
+}
+
+Uplink::Frame loadCommand(const Axis& axis, const Shape& shape, U32 us) {
     const FwOpcodeType base = load.getIdBase();
     if (axis.burst) {
-        return command(0, base + LoadIds::SET_BURST, Args().add(BURST_MESSAGES).add(us));
+        return command(0, base + LoadIds::SET_BURST, Args().add(shape.messages).add(us));
     }
     return command(0, base + LoadIds::SET_SLICE, Args().add(us));
 }
 
-Uplink::Frame idleCommand(const Axis& axis) {
-    return loadCommand(axis, 0);
+Uplink::Frame paceCommand(const Axis& axis, U32 every) {
+    return command(0, load.getIdBase() + LoadIds::SET_PACE,
+                   Args().add(axis.burst ? 1U : every).add(axis.burst ? every : 1U));
+}
+
+// The calls of an axis' load port so far
+U32 loadCalls(const Axis& axis) {
+    return axis.burst ? load.bursts() : load.slices();
 }
 
 // Where health's warning would first fire along an axis: the first level at
@@ -81,7 +120,9 @@ struct HealthOnAxis {
     U32 worst;
 };
 
-// Sweep one axis; false if a load command was not accepted
+// Sweep one axis; false if a load command was not accepted. Its first
+// point (no work) counts the calls of the axis' load port over its measured
+// segment: their period shapes the other points (shapeOf).
 bool sweep(const Axis& axis, U32 breakUs[], HealthOnAxis& health) {
     bool commanded = true;
     health = {false, 0, 0};
@@ -90,23 +131,29 @@ bool sweep(const Axis& axis, U32 breakUs[], HealthOnAxis& health) {
     }
     const U32 settleTicks = wholeHyperperiods(SETTLE_TICKS_MIN);
     const U32 measureTicks = wholeHyperperiods(MEASURE_TICKS_MIN);
+    Shape shape = {0, axis.burst ? BURST_MESSAGES_MAX : 0U, 1};
     for (U32 point = 0; point < axis.points; point++) {
-        const U32 us = point * stepUs(axis);
-        Uplink::Frame frame = loadCommand(axis, us);
-        uplink.play(&frame, 1);
+        const U32 us = point * shape.stepUs;
+        // The pace goes up with the first point that has work
+        Uplink::Frame frames[] = {loadCommand(axis, shape, us), paceCommand(axis, shape.every)};
+        const FwSizeType framesPlayed = (point == 1 && shape.every != 1U) ? 2 : 1;
+        uplink.play(frames, framesPlayed);
         Session::run(settleTicks);
-        commanded = commanded && frame.asExpected();
+        for (FwSizeType f = 0; f < framesPlayed; f++) {
+            commanded = commanded && frames[f].asExpected();
+        }
         Session::nextSegment();
         Report::startHealthSegment();
         const U32 processedBefore = load.processed();
         const U32 droppedBefore = load.dropped();
+        const U32 callsBefore = loadCalls(axis);
         Session::run(measureTicks);
         bool broke[RATE_GROUP_COUNT] = {};
         const Report::SweepPoint measured = {axis.name,
                                              point,
                                              us,
                                              "us",
-                                             axis.burst ? BURST_MESSAGES : 0,
+                                             shape.messages,
                                              measureTicks,
                                              load.processed() - processedBefore,
                                              load.dropped() - droppedBefore};
@@ -122,13 +169,33 @@ bool sweep(const Axis& axis, U32 breakUs[], HealthOnAxis& health) {
             }
         }
         Session::nextSegment();
+        if (point == 0) {
+            const U32 calls = loadCalls(axis) - callsBefore;
+            if (calls == 0) {
+                printk(
+                    "KIT ERROR axis=%s: no call of the load's %s in %u ticks: the topology must wire it to a rate "
+                    "group (docs/your-deployment.md)\n",
+                    axis.name, axis.burst ? "burstIn" : "sliceIn", static_cast<unsigned>(measureTicks));
+                commanded = false;
+                break;
+            }
+            shape = shapeOf(axis, measureTicks * TICK_US / calls);
+            printk("KIT AXIS name=%s period_us=%u step_us=%u top_us=%u burst=%u every=%u\n", axis.name,
+                   static_cast<unsigned>(measureTicks * TICK_US / calls), static_cast<unsigned>(shape.stepUs),
+                   static_cast<unsigned>(shape.stepUs * (axis.points - 1U)), static_cast<unsigned>(shape.messages),
+                   static_cast<unsigned>(shape.every));
+        }
     }
-    // Back to no load before the next axis
-    Uplink::Frame idle = idleCommand(axis);
-    uplink.play(&idle, 1);
+    // Back to no load, and the load unpaced, before the next axis
+    Uplink::Frame idle[] = {loadCommand(axis, shape, 0), paceCommand(axis, 1)};
+    const FwSizeType idlePlayed = (shape.every != 1U) ? 2 : 1;
+    uplink.play(idle, idlePlayed);
     Session::run(settleTicks);
     Session::nextSegment();
-    return commanded && idle.asExpected();
+    for (FwSizeType f = 0; f < idlePlayed; f++) {
+        commanded = commanded && idle[f].asExpected();
+    }
+    return commanded;
 }
 
 void printBreaks(const Axis& axis, const U32 breakUs[]) {

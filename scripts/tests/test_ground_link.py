@@ -19,7 +19,10 @@ from kittools.link import client, fuzz, ground
 from kittools.link.gds_adapter import UnixSocketAdapter
 from kittools.workspace import KitError
 
-DEPLOYMENT = fuzz.Deployment(noop=0x500, with_argument=0x1600, opcodes=frozenset({0x500, 0x1600}), accumulator_size=320)
+# A dispatcher that is not the reference deployment's: the fuzzer names it from the dictionary
+DISPATCHER = "Thermal.cmdDisp"
+DEPLOYMENT = fuzz.Deployment(noop=0x500, dispatcher=DISPATCHER, with_argument=0x1600,
+                             opcodes=frozenset({0x500, 0x1600}), accumulator_size=320)
 
 
 def test_fuzzer_frames_are_what_fprime_gds_deframes():
@@ -74,11 +77,11 @@ def test_bad_payloads_are_well_framed():
 
 
 def test_outcome_names_every_shortfall():
-    outcome = fuzz.Outcome(seed=1, noops_sent=2, noops_answered=1,
+    outcome = fuzz.Outcome(seed=1, dispatcher=DISPATCHER, noops_sent=2, noops_answered=1,
                            halt="ASSERT: FrameAccumulator.cpp:123")
     outcome.sent["oversized"] = 1
     outcome.telemetry = {"Kit.linkHealth.FramesDetected": 2, "Kit.linkHealth.Oversized": 1,
-                         "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 0,
+                         "Kit.linkHealth.UnknownPackets": 0, "Thermal.cmdDisp.CommandErrors": 0,
                          "Kit.linkHealth.CommandsDropped": 0, "Kit.linkHealth.UartRingDrops": 0,
                          "Kit.linkHealth.UartBytesReceived": 0}
     failures = outcome.failures()
@@ -92,15 +95,15 @@ def test_the_read_out_command_is_one_more_bad_command_and_one_more_frame():
     """The unknown opcode sent after the fuzzing to write the dispatcher's
     counts again is expected in them: without it counted, a deployment
     that refused it would fail, and one that took it would pass."""
-    outcome = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1, read_out_commands=1)
-    outcome.events["Kit.cmdDisp.OpCodeError"] = 1
+    outcome = fuzz.Outcome(seed=1, dispatcher=DISPATCHER, noops_sent=1, noops_answered=1, read_out_commands=1)
+    outcome.events["Thermal.cmdDisp.OpCodeError"] = 1
     outcome.telemetry = {"Kit.linkHealth.FramesDetected": 2, "Kit.linkHealth.Oversized": 0,
-                         "Kit.linkHealth.UnknownPackets": 0, "Kit.cmdDisp.CommandErrors": 1,
+                         "Kit.linkHealth.UnknownPackets": 0, "Thermal.cmdDisp.CommandErrors": 1,
                          "Kit.linkHealth.CommandsDropped": 0, "Kit.linkHealth.UartRingDrops": 0,
                          "Kit.linkHealth.UartBytesReceived": 0}
     assert outcome.failures() == []
-    outcome.telemetry["Kit.cmdDisp.CommandErrors"] = 0
-    assert outcome.failures() == ["cmdDisp.CommandErrors: 0, expected 1"]
+    outcome.telemetry["Thermal.cmdDisp.CommandErrors"] = 0
+    assert outcome.failures() == ["Thermal.cmdDisp.CommandErrors: 0, expected 1"]
     assert fuzz.unknown_opcode(random.Random(5), DEPLOYMENT) not in DEPLOYMENT.opcodes
 
 
@@ -146,23 +149,23 @@ def test_bad_commands_count_from_the_dispatchers_events_in_either_form():
                "Kit.linkHealth.UnknownPackets": 0, "Kit.linkHealth.CommandsDropped": 0,
                "Kit.linkHealth.UartRingDrops": 0, "Kit.linkHealth.UartBytesReceived": 0}
     # The passive dispatcher has no CommandErrors channel: its events alone count
-    passive = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1, dispatcher_telemetry=False)
+    passive = fuzz.Outcome(seed=1, dispatcher=DISPATCHER, noops_sent=1, noops_answered=1, dispatcher_telemetry=False)
     passive.sent.update({"bad_opcode": 1, "bad_arguments": 1})
     passive.telemetry = dict(healthy)
-    passive.events.update({"Kit.cmdDisp.InvalidCommand": 1, "Kit.cmdDisp.OpCodeError": 1})
+    passive.events.update({"Thermal.cmdDisp.InvalidCommand": 1, "Thermal.cmdDisp.OpCodeError": 1})
     assert passive.failures() == []
-    passive.events["Kit.cmdDisp.OpCodeError"] = 0
+    passive.events["Thermal.cmdDisp.OpCodeError"] = 0
     assert [f for f in passive.failures() if "refusal events" in f and ": 1, expected 2" in f]
     # F´'s CommandDispatcher must count them in telemetry as well
-    active = fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1)
+    active = fuzz.Outcome(seed=1, dispatcher=DISPATCHER, noops_sent=1, noops_answered=1)
     active.sent.update(passive.sent)
     active.telemetry = dict(healthy)
-    active.events.update({"Kit.cmdDisp.InvalidCommand": 1, "Kit.cmdDisp.OpCodeError": 1})
-    assert active.failures() == ["cmdDisp.CommandErrors: None, expected 2"]
+    active.events.update({"Thermal.cmdDisp.InvalidCommand": 1, "Thermal.cmdDisp.OpCodeError": 1})
+    assert active.failures() == ["Thermal.cmdDisp.CommandErrors: None, expected 2"]
     # ... unless every read-out overflowed the downlink: then its events alone count
     active.read_out_overflowed = True
     assert active.failures() == []
-    active.events["Kit.cmdDisp.OpCodeError"] = 0
+    active.events["Thermal.cmdDisp.OpCodeError"] = 0
     assert [f for f in active.failures() if "refusal events" in f]
 
 

@@ -10,10 +10,13 @@ NO_OP is sent until one is answered, at most UPLINK_TRIES times, and the
 tests run on a link known to carry commands; a link that never answers
 fails every test with one message."""
 
+from pathlib import Path
 from typing import Any
 
 import pytest
 from fprime_gds.common.history.test import TestHistory
+
+from kittools.link.dictionary import Dictionary
 
 UPLINK_TRIES = 5
 # Far above a NO_OP's round trip (well under a second on either board), so
@@ -46,8 +49,9 @@ def keep_receive_order(api: Any) -> None:
 def uplink_proven(fprime_test_api_session: Any) -> None:
     api = fprime_test_api_session
     keep_receive_order(api)
+    names = Dictionary.read(Path(api.dictionaries.dictionary_path))
     for _ in range(UPLINK_TRIES):
-        if api.send_and_await_event("Kit.cmdDisp.CMD_NO_OP", events="Kit.cmdDisp.NoOpReceived",
+        if api.send_and_await_event(names.noop_command, events=names.noop_event,
                                     timeout=ANSWER_S) is not None:
             return
     pytest.fail(f"the ground link answered none of {UPLINK_TRIES} NO_OPs ({ANSWER_S} s each)")

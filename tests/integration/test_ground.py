@@ -19,6 +19,8 @@ from typing import Any
 
 import pytest
 
+from kittools.link.dictionary import Dictionary
+
 TIMEOUT_S = 10  # whole seconds: the API arms signal.alarm with it
 # Controller::SETPOINT_LIMIT (app/Components/Controller/Controller.hpp)
 SETPOINT_LIMIT = 20000
@@ -35,6 +37,13 @@ def _services(api: Any, command: str) -> None:
         pytest.skip("this board's profile leaves F´'s health and version services out for this model")
 
 
+def _dispatcher(api: Any, name: str) -> str:
+    """A command, event or channel of the deployment's command dispatcher,
+    by its own name: the dispatcher is found in the dictionary (the owner of
+    CMD_NO_OP, kittools.link.dictionary), whatever its topology names it."""
+    return Dictionary.read(Path(api.dictionaries.dictionary_path)).of_dispatcher(name)
+
+
 def _reference_component(api: Any, command: str) -> None:
     """Skips a test of the reference deployment's own components (its
     controller) on another deployment (kit ... --deployment): its dictionary
@@ -45,8 +54,8 @@ def _reference_component(api: Any, command: str) -> None:
 
 
 def test_noop_completes_with_its_events(fprime_test_api: Any) -> None:
-    fprime_test_api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
-    fprime_test_api.assert_event("Kit.cmdDisp.NoOpReceived", timeout=TIMEOUT_S)
+    fprime_test_api.send_and_assert_command(_dispatcher(fprime_test_api, "CMD_NO_OP"), max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event(_dispatcher(fprime_test_api, "NoOpReceived"), timeout=TIMEOUT_S)
 
 
 @pytest.mark.parametrize("setpoint", [0, 1500, -SETPOINT_LIMIT, SETPOINT_LIMIT])
@@ -63,7 +72,7 @@ def test_setpoint_out_of_range_rejected(fprime_test_api: Any, setpoint: int) -> 
     _reference_component(fprime_test_api, "Kit.controller.SET_SETPOINT")
     fprime_test_api.send_command("Kit.controller.SET_SETPOINT", [setpoint])
     fprime_test_api.assert_event("Kit.controller.SetpointRejected", [setpoint, SETPOINT_LIMIT], timeout=TIMEOUT_S)
-    fprime_test_api.assert_event("Kit.cmdDisp.OpCodeError", timeout=TIMEOUT_S)
+    fprime_test_api.assert_event(_dispatcher(fprime_test_api, "OpCodeError"), timeout=TIMEOUT_S)
 
 
 def test_load_commands_complete(fprime_test_api: Any) -> None:
@@ -180,7 +189,7 @@ def test_parameter_read_back_after_warm_restart(fprime_test_api: Any) -> None:
         _restart(api)
         api.assert_event("Kit.prmDb.PrmFileLoadComplete", ["ACTIVE", 1, 1, 0], timeout=RESTART_S)
         api.assert_event("Kit.controller.GainsApplied", [kp_default + 1, ki], timeout=RESTART_S)
-        api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+        api.send_and_assert_command(_dispatcher(api, "CMD_NO_OP"), max_delay=TIMEOUT_S)
     finally:
         _save_kp(api, kp_default)
 
@@ -209,7 +218,7 @@ def test_damaged_parameter_file_rejected(fprime_test_api: Any, damage: tuple[str
         api.send_command("Kit.prmDb.PRM_LOAD_FILE", [parameter_file, "RESET"])
         api.assert_event("Kit.prmDb.PrmFileReadError", [stage, 0, None], timeout=TIMEOUT_S)
         api.assert_event("Kit.prmDb.PrmDbFileLoadFailed", timeout=TIMEOUT_S)
-        api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+        api.send_and_assert_command(_dispatcher(api, "CMD_NO_OP"), max_delay=TIMEOUT_S)
     finally:
         _save_kp(api, kp_default)
 
@@ -227,7 +236,7 @@ def test_damaged_parameter_file_at_restart_leaves_defaults(fprime_test_api: Any)
         _restart(api)
         api.assert_event("Kit.prmDb.PrmFileReadError", ["DELIMITER_VALUE", 0, None], timeout=RESTART_S)
         api.assert_event("Kit.controller.GainsApplied", [kp_default, ki], timeout=RESTART_S)
-        api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+        api.send_and_assert_command(_dispatcher(api, "CMD_NO_OP"), max_delay=TIMEOUT_S)
     finally:
         _save_kp(api, kp_default)
 
@@ -344,7 +353,7 @@ def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> No
 SEQUENCE_SETPOINT = 1234
 SEQUENCE_TIMED_SETPOINT = 4321
 SEQUENCE_TEXT = f"""; The kit's ground test sequence
-R00:00:00 Kit.cmdDisp.CMD_NO_OP
+R00:00:00 {{noop}}
 R00:00:00 Kit.controller.SET_SETPOINT {SEQUENCE_SETPOINT}
 R00:00:01 Kit.controller.SET_SETPOINT {SEQUENCE_TIMED_SETPOINT}
 """
@@ -363,10 +372,11 @@ def _sequence(api: Any, tmp_path: Path) -> tuple[str, bytes]:
     board profile leaves it out (CONFIG_KIT_SERVICE_SEQUENCER)."""
     if "Kit.cmdSeq.CS_RUN" not in api.dictionaries.command_name:
         pytest.skip("this board's profile leaves F´'s command sequencer out for this model")
+    _reference_component(api, "Kit.controller.SET_SETPOINT")
     from fprime_gds.common.tools.seqgen import generateSequence
 
     text = tmp_path / "kit.seq"
-    text.write_text(SEQUENCE_TEXT)
+    text.write_text(SEQUENCE_TEXT.format(noop=_dispatcher(api, "CMD_NO_OP")))
     binary = tmp_path / "kit.bin"
     generateSequence(str(text), str(binary), str(api.dictionaries.dictionary_path), ANY_TIME_BASE)
     return str(api.dictionaries.constant_name["Kit.RamFs.scratchFile"]), binary.read_bytes()
@@ -390,7 +400,7 @@ def test_sequence_uplinked_and_run(fprime_test_api: Any, tmp_path: Path) -> None
     start = api.get_event_test_history().size()
     api.send_and_assert_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"], max_delay=SEQUENCE_S)
     api.assert_event("Kit.cmdSeq.CS_SequenceComplete", start=start, timeout=TIMEOUT_S)
-    noop = api.assert_event("Kit.cmdDisp.NoOpReceived", start=start, timeout=TIMEOUT_S)
+    noop = api.assert_event(_dispatcher(api, "NoOpReceived"), start=start, timeout=TIMEOUT_S)
     api.assert_event("Kit.controller.SetpointChanged", [SEQUENCE_SETPOINT], start=start, timeout=TIMEOUT_S)
     timed = api.assert_event("Kit.controller.SetpointChanged", [SEQUENCE_TIMED_SETPOINT], start=start,
                              timeout=TIMEOUT_S)
@@ -411,8 +421,8 @@ def test_sequence_with_a_bad_crc_refused(fprime_test_api: Any, tmp_path: Path) -
     start = api.get_event_test_history().size()
     api.send_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"])
     api.assert_event("Kit.cmdSeq.CS_FileCrcFailure", start=start, timeout=TIMEOUT_S)
-    api.assert_event_count(0, "Kit.cmdDisp.NoOpReceived", start=start)
-    api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+    api.assert_event_count(0, _dispatcher(api, "NoOpReceived"), start=start)
+    api.send_and_assert_command(_dispatcher(api, "CMD_NO_OP"), max_delay=TIMEOUT_S)
 
 
 # F´'s sequence file (Svc/CmdSequencer/formats, fprime-gds's SeqBinaryWriter):
@@ -486,6 +496,6 @@ def test_sequence_with_bad_records_refused(fprime_test_api: Any, tmp_path: Path,
     start = api.get_event_test_history().size()
     api.send_command("Kit.cmdSeq.CS_RUN", [destination, "BLOCK"])
     api.assert_event(f"Kit.cmdSeq.{event}", start=start, timeout=TIMEOUT_S)
-    api.assert_event_count(0, "Kit.cmdDisp.NoOpReceived", start=start)
+    api.assert_event_count(0, _dispatcher(api, "NoOpReceived"), start=start)
     api.assert_event_count(0, "Kit.controller.SetpointChanged", start=start)
-    api.send_and_assert_command("Kit.cmdDisp.CMD_NO_OP", max_delay=TIMEOUT_S)
+    api.send_and_assert_command(_dispatcher(api, "CMD_NO_OP"), max_delay=TIMEOUT_S)

@@ -16,9 +16,13 @@ Load::Load(const char* const compName)
       m_burstCount(0),
       m_burstUs(0),
       m_downlinkPackets(0),
+      m_sliceEvery(1),
+      m_burstEvery(1),
       m_downlinkSequence(0),
       m_processed(0),
       m_dropped(0),
+      m_slices(0),
+      m_bursts(0),
       m_lcg(1) {}
 
 Load::~Load() {}
@@ -33,7 +37,10 @@ void Load::compute(U32 us) {
 void Load::sliceIn_handler(FwIndexType portNum, U32 context) {
     (void)portNum;
     (void)context;
-    this->compute(m_sliceUs);
+    m_slices++;
+    // One slice each m_sliceEvery messages (SET_PACE); the others are
+    // processed with no computation
+    this->compute(((m_slices % m_sliceEvery) == 0) ? m_sliceUs : 0);
     const U32 packets = m_downlinkPackets;
     for (U32 i = 0; i < packets; i++) {
         this->log_ACTIVITY_LO_DownlinkLoadPacket(m_downlinkSequence);
@@ -45,6 +52,10 @@ void Load::sliceIn_handler(FwIndexType portNum, U32 context) {
 void Load::burstIn_handler(FwIndexType portNum, U32 context) {
     (void)portNum;
     (void)context;
+    m_bursts++;
+    if ((m_bursts % m_burstEvery) != 0) {
+        return;  // one burst each m_burstEvery calls (SET_PACE)
+    }
     const U32 count = m_burstCount;
     for (U32 i = 0; i < count; i++) {
         this->ioOut_out(0, i);
@@ -96,6 +107,19 @@ void Load::SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 
     m_burstCount = count;
     m_burstUs = us;
     this->log_ACTIVITY_HI_LoadSet(m_sliceUs, count, us);
+    this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
+}
+
+void Load::SET_PACE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 sliceEvery, U32 burstEvery) {
+    const bool sliceBad = sliceEvery == 0 || sliceEvery > PACE_MAX;
+    if (sliceBad || burstEvery == 0 || burstEvery > PACE_MAX) {
+        this->log_WARNING_LO_LoadRejected(sliceBad ? sliceEvery : burstEvery, PACE_MAX);
+        this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::VALIDATION_ERROR);
+        return;
+    }
+    m_sliceEvery = sliceEvery;
+    m_burstEvery = burstEvery;
+    this->log_ACTIVITY_HI_PaceSet(sliceEvery, burstEvery);
     this->cmdResponse_out(opCode, cmdSeq, Fw::CmdResponse::OK);
 }
 

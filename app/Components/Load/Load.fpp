@@ -57,6 +57,15 @@ module Kit {
             seed: U32 @< The pattern's seed, not 0
         ) opcode 3
 
+        @ Set the pace of the load: one slice each sliceEvery messages of
+        @ sliceIn (the others run no computation), one burst each burstEvery
+        @ calls of burstIn. The load sweep paces a load whose work at the top
+        @ of its axis would outgrow its rate group's period (app/scenarios/load.cpp)
+        sync command SET_PACE(
+            sliceEvery: U32 @< sliceIn messages per slice, 1 to PACE_MAX
+            burstEvery: U32 @< burstIn calls per burst, 1 to PACE_MAX
+        ) opcode 4
+
         event LoadSet(sliceUs: U32, burst: U32, burstUs: U32) severity activity high id 0 format "Load: {} us per slice, bursts of {} x {} us"
 
         event LoadRejected(value: U32, limit: U32) severity warning low id 1 format "Load setting {} is above its limit {}"
@@ -70,6 +79,8 @@ module Kit {
         event DownlinkLoadPacket(sequence: U32) severity activity low id 4 format "Downlink load packet {}"
 
         event FileFilled(file: string size FileNameStringSize, bytes: U32, seed: U32) severity activity high id 5 format "File {} filled: {} bytes of the pattern from seed {}"
+
+        event PaceSet(sliceEvery: U32, burstEvery: U32) severity activity high id 7 format "Load paced: a slice each {} slice messages, a burst each {} burst calls"
 
         event FileNotFilled(file: string size FileNameStringSize, written: U32, status: I32) severity warning low id 6 format "File {} not filled: {} bytes written, file status {}"
 

@@ -19,6 +19,9 @@ class Load final : public LoadComponentBase {
     //! Most messages one burst may push (the queue holds fewer: a burst above
     //! its depth is how an overrun of the load is provoked)
     static constexpr U32 BURST_MAX = 32;
+    //! Most calls per slice or burst (SET_PACE): a 50 ms slice each 64
+    //! calls of a 1 kHz group is within half of their 64 ms
+    static constexpr U32 PACE_MAX = 64;
     //! Extra downlink packets per slice message (the events queue holds 8)
     static constexpr U32 DOWNLINK_MAX = 16;
 
@@ -49,6 +52,11 @@ class Load final : public LoadComponentBase {
     U32 processed() const { return m_processed; }
     //! Messages dropped on a full queue
     U32 dropped() const { return m_dropped; }
+    //! Slice messages handled, and calls of burstIn: the rate groups they
+    //! are wired to, counted (the load sweep derives their periods from
+    //! them, not from the topology)
+    U32 slices() const { return m_slices; }
+    U32 bursts() const { return m_bursts; }
 
   private:
     void sliceIn_handler(FwIndexType portNum, U32 context) override;
@@ -60,6 +68,7 @@ class Load final : public LoadComponentBase {
     void SET_SLICE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 us) override;
     void SET_BURST_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 count, U32 us) override;
     void SET_DOWNLINK_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 packets) override;
+    void SET_PACE_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, U32 sliceEvery, U32 burstEvery) override;
     void FILL_FILE_cmdHandler(FwOpcodeType opCode,
                               U32 cmdSeq,
                               const Fw::CmdStringArg& file,
@@ -77,9 +86,13 @@ class Load final : public LoadComponentBase {
     volatile U32 m_burstCount;
     volatile U32 m_burstUs;
     volatile U32 m_downlinkPackets;
+    volatile U32 m_sliceEvery;
+    volatile U32 m_burstEvery;
     U32 m_downlinkSequence;
     U32 m_processed;
     U32 m_dropped;
+    U32 m_slices;
+    U32 m_bursts;
     U32 m_lcg;  //!< the computation's state, kept so it is not optimized away
 };
 

@@ -20,6 +20,7 @@ namespace Kit {
 struct LoadIds : LoadComponentBase {
     static constexpr FwOpcodeType SET_SLICE = OPCODE_SET_SLICE;
     static constexpr FwOpcodeType SET_BURST = OPCODE_SET_BURST;
+    static constexpr FwOpcodeType SET_PACE = OPCODE_SET_PACE;
     static constexpr FwEventIdType MESSAGES_DROPPED = EVENTID_MESSAGESDROPPED;
 };
 

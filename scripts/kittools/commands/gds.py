@@ -9,6 +9,7 @@ from pathlib import Path
 
 from kittools import deployment, variants
 from kittools.link import ground
+from kittools.link.dictionary import Dictionary
 from kittools.log import say
 from kittools.suite import platforms
 from kittools.workspace import KitError, check_provisioned
@@ -33,7 +34,8 @@ def run(args: argparse.Namespace) -> int:
     with ground.GroundStation(build_dir, logs, gui=True, gui_port=args.port, dictionary=args.dictionary) as station:
         say(f"QEMU runs {build_dir}; its link: {station.link.socket}")
         say(f"fprime-gds: http://127.0.0.1:{args.port} (dictionary {station.link.dictionary})")
-        say(f"from a shell: fprime-cli command-send Kit.cmdDisp.CMD_NO_OP {' '.join(station.client_arguments())}")
+        noop = Dictionary.read(station.link.dictionary).noop_command
+        say(f"from a shell: fprime-cli command-send {noop} {' '.join(station.client_arguments())}")
         say("Ctrl-C stops both")
         try:
             while station.qemu is not None and station.qemu.running():

@@ -19,6 +19,7 @@ from collections import Counter, deque
 from collections.abc import Callable
 from pathlib import Path
 
+from kittools.link.dictionary import Dictionary
 from kittools.workspace import KitError
 
 START_WORD = 0xDEADBEEF
@@ -89,6 +90,8 @@ class Downlink:
         from fprime_gds.common.decoders.event_decoder import EventDecoder
         from fprime_gds.common.models.dictionaries import Dictionaries
 
+        #: The dictionary's names: the dispatcher's NO_OP and its events
+        self.dictionary = Dictionary.read(dictionary)
         dictionaries = Dictionaries()
         dictionaries.load_dictionaries(str(dictionary), None, None)
         self._events = EventDecoder(dictionaries.event_id)

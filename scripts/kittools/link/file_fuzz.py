@@ -45,10 +45,10 @@ from kittools.link.client import (
     command,
     frame,
 )
+from kittools.link.dictionary import Dictionary
 from kittools.link.fuzz import (
     DOWNLINK_OVERFLOW_EVENT,
     MISSED_ANSWERS_MAX,
-    NOOP_EVENT,
     REPLY_TIMEOUT_S,
     after_boot_burst,
     read_out,
@@ -295,11 +295,9 @@ def has_file_uplink(dictionary: Path) -> bool:
 
 
 def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:
-    data = json.loads(dictionary.read_text())
-    constants = {c["qualifiedName"]: c["value"] for c in data.get("constants", [])}
-    opcodes = {c["name"]: c["opcode"] for c in data["commands"]}
+    names = Dictionary.read(dictionary)
     try:
-        return str(constants[SCRATCH_CONSTANT]), int(opcodes["Kit.cmdDisp.CMD_NO_OP"])
+        return str(names.constants[SCRATCH_CONSTANT]), names.noop_opcode
     except KeyError as missing:
         raise KitError(f"{dictionary} lacks {missing}: is it this kit's dictionary?") from None
 
@@ -352,7 +350,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
             settle(link, seed)
             ended = read_out(link, play, seed)
             outcome.read_out_overflowed = ended.overflowed
-        outcome.noops_answered = link.events[NOOP_EVENT]
+        outcome.noops_answered = link.events[link.dictionary.noop_event]
         outcome.events = link.events
         if outcome.halt:
             return outcome

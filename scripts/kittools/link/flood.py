@@ -21,7 +21,6 @@ failure: the report shows them per model.
 from __future__ import annotations
 
 import functools
-import json
 import random
 import time
 from dataclasses import asdict, dataclass, field
@@ -41,7 +40,8 @@ from kittools.link.client import (
     line_rate,
     noise,
 )
-from kittools.link.fuzz import NOOP_EVENT, answered
+from kittools.link.dictionary import Dictionary
+from kittools.link.fuzz import answered
 from kittools.link.health import HEARTBEAT_CHANNEL, REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S
 from kittools.workspace import KitError
@@ -136,8 +136,9 @@ class Outcome:
 def run(build: Path) -> Outcome:
     """Boot a ground build, flood its link and account for every byte."""
     link_info = ground.link_of(build)
-    opcodes = {c["name"]: c["opcode"] for c in json.loads(link_info.dictionary.read_text())["commands"]}
-    noop = frame(command(opcodes["Kit.cmdDisp.CMD_NO_OP"]))
+    names = Dictionary.read(link_info.dictionary)
+    opcodes = names.opcodes
+    noop = frame(command(names.noop_opcode))
     outcome = Outcome()
     # In real time: the line's writes stay small and even (client.Line)
     with ground.boot(link_info, realtime=True) as qemu:
@@ -170,7 +171,7 @@ def run(build: Path) -> Outcome:
                     missed += 1
                     if missed >= MISSED_ANSWERS_MAX:
                         break
-            outcome.noops_answered = link.events[NOOP_EVENT]
+            outcome.noops_answered = link.events[names.noop_event]
             outcome.flood_counts = settled.since(before)
             outcome.counts = settled_counts(link, link.now + SETTLE_S, "the flood").since(before)
         finally:

@@ -23,7 +23,6 @@ halt on the console.
 from __future__ import annotations
 
 import functools
-import json
 import random
 from collections import Counter
 from collections.abc import Callable
@@ -43,6 +42,7 @@ from kittools.link.client import (
     command,
     frame,
 )
+from kittools.link.dictionary import Dictionary
 from kittools.workspace import KitError
 
 # Closes every batch: a frame still waiting for its claimed length (a
@@ -62,6 +62,8 @@ class Deployment:
     """What the fuzzer needs from the build's dictionary."""
 
     noop: int
+    #: The dispatcher's qualified instance name (kittools.link.dictionary)
+    dispatcher: str
     #: A command with a U32 argument, in any deployment (the kit's load's
     #: SET_SLICE): any shorter argument is a format error
     with_argument: int
@@ -72,16 +74,14 @@ class Deployment:
 
     @staticmethod
     def from_dictionary(path: Path) -> Deployment:
-        data = json.loads(path.read_text())
-        opcodes = {c["name"]: c["opcode"] for c in data["commands"]}
-        constants = {c["qualifiedName"]: c["value"] for c in data.get("constants", [])}
-        channels = {c["name"] for c in data.get("telemetryChannels", [])}
+        names = Dictionary.read(path)
         try:
-            return Deployment(opcodes["Kit.cmdDisp.CMD_NO_OP"], opcodes[ARGUMENT_COMMAND],
-                              frozenset(opcodes.values()), int(constants["Kit.Link.accumulatorSize"]),
-                              DISPATCHER_ERRORS_CHANNEL in channels)
-        except KeyError as missing:
-            raise KitError(f"{path} lacks {missing}: is it this kit's dictionary?") from None
+            accumulator_size = int(names.constants[ACCUMULATOR_CONSTANT])
+        except KeyError:
+            raise KitError(f"{path} lacks {ACCUMULATOR_CONSTANT}: is it this kit's dictionary?") from None
+        return Deployment(names.noop_opcode, names.dispatcher, names.opcode(ARGUMENT_COMMAND),
+                          frozenset(names.opcodes.values()), accumulator_size,
+                          names.of_dispatcher(DISPATCHER_ERRORS) in names.channels)
 
 
 def unknown_opcode(rng: random.Random, deployment: Deployment) -> int:
@@ -147,6 +147,8 @@ class Outcome:
     halt: str = ""
     #: NO_OPs (their number in the run) not answered within REPLY_TIMEOUT_S
     missed: list[int] = field(default_factory=list)
+    #: The dispatcher's qualified instance name (Deployment.dispatcher)
+    dispatcher: str = ""
     #: The dispatcher's form counts errors in telemetry (Deployment.dispatcher_telemetry)
     dispatcher_telemetry: bool = True
     #: Unknown opcodes sent after the fuzzing to write the dispatcher's counts again
@@ -172,8 +174,8 @@ class Outcome:
              self.sent["oversized"] + self.sent["length_wraps"]),
             ("LinkHealth.UnknownPackets", self.telemetry.get("Kit.linkHealth.UnknownPackets"),
              self.sent["unknown_packet"]),
-            ("cmdDisp's refusal events (" + ", ".join(e.removeprefix("Kit.cmdDisp.") for e in DISPATCHER_REFUSALS)
-             + ")", sum(self.events[e] for e in DISPATCHER_REFUSALS), bad_commands),
+            (f"{self.dispatcher}'s refusal events ({', '.join(DISPATCHER_REFUSALS)})",
+             sum(self.events[f"{self.dispatcher}.{e}"] for e in DISPATCHER_REFUSALS), bad_commands),
             # Paced by its NO_OPs, the fuzzer never has more commands in flight than the link lets through,
             # nor fills the event service's queue (LinkHealth sheds commands then)
             ("LinkHealth.CommandsDropped", self.telemetry.get("Kit.linkHealth.CommandsDropped"), 0),
@@ -183,7 +185,8 @@ class Outcome:
             ("LinkHealth.UartBytesReceived", self.telemetry.get("Kit.linkHealth.UartBytesReceived"), self.bytes_sent),
         ]
         if self.dispatcher_telemetry and not self.read_out_overflowed:
-            checks.append(("cmdDisp.CommandErrors", self.telemetry.get(DISPATCHER_ERRORS_CHANNEL), bad_commands))
+            errors = f"{self.dispatcher}.{DISPATCHER_ERRORS}"
+            checks.append((errors, self.telemetry.get(errors), bad_commands))
         for name, got, expected in checks:
             if got != expected:
                 found.append(f"{name}: {got}, expected {expected}")
@@ -201,20 +204,22 @@ class Outcome:
                 "noops_sent": self.noops_sent, "read_out_commands": self.read_out_commands,
                 "read_out_overflowed": self.read_out_overflowed,
                 "noops_answered": self.noops_answered, "bytes_sent": self.bytes_sent,
-                "rejected": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())},
+                "rejected": {name.split(".", 1)[-1]: value for name, value in sorted(self.telemetry.items())},
                 "events": dict(sorted(self.events.items())),
                 "downlink_overflows": self.events[DOWNLINK_OVERFLOW_EVENT], "halt": self.halt, "missed": self.missed,
                 "failures": self.failures()}
 
 
-NOOP_EVENT = "Kit.cmdDisp.NoOpReceived"
 #: The command whose arguments the fuzzer gets wrong: the kit's own, so that
 #: it is in every deployment's dictionary
 ARGUMENT_COMMAND = "Kit.load.SET_SLICE"
+#: The link's frame accumulator (Kit.GroundLink): the longest frame it takes
+ACCUMULATOR_CONSTANT = "Kit.Link.accumulatorSize"
 # How the dispatcher refuses a command, in either form: an unknown opcode, a
-# packet it cannot read, a command its handler failed (bad arguments)
-DISPATCHER_REFUSALS = ("Kit.cmdDisp.InvalidCommand", "Kit.cmdDisp.MalformedCommand", "Kit.cmdDisp.OpCodeError")
-DISPATCHER_ERRORS_CHANNEL = "Kit.cmdDisp.CommandErrors"
+# packet it cannot read, a command its handler failed (bad arguments); the
+# dispatcher's own names (Dictionary.of_dispatcher)
+DISPATCHER_REFUSALS = ("InvalidCommand", "MalformedCommand", "OpCodeError")
+DISPATCHER_ERRORS = "CommandErrors"
 REPLY_TIMEOUT_S = 20.0
 # Unanswered NO_OPs after which the run stops (it has failed already)
 MISSED_ANSWERS_MAX = 3
@@ -222,17 +227,21 @@ MISSED_ANSWERS_MAX = 3
 HEARTBEAT_CHANNEL = "Kit.linkHealth.FramesDetected"
 # Three 10 Hz cycles: the dispatcher's call, then the telemetry service's
 SETTLE_S = 0.3
-# Telemetry read at the end
-COUNT_CHANNELS = ("Kit.linkHealth.FramesDetected", "Kit.linkHealth.BadChecksums", "Kit.linkHealth.BytesDiscarded",
-                  "Kit.linkHealth.Oversized", "Kit.linkHealth.UnknownPackets", "Kit.linkHealth.CommandsDropped",
-                  "Kit.cmdDisp.CommandErrors", "Kit.cmdDisp.CommandsDispatched",
-                  # where the bytes went before frame detection: the UART read them all, its ring kept them
-                  # (the fuzzer's batches fit the ring: a drop here is a failure)
-                  "Kit.linkHealth.UartBytesReceived", "Kit.linkHealth.UartRingDrops")
+# Telemetry read at the end: the link's, then the dispatcher's own (count_channels)
+LINK_COUNT_CHANNELS = ("Kit.linkHealth.FramesDetected", "Kit.linkHealth.BadChecksums", "Kit.linkHealth.BytesDiscarded",
+                       "Kit.linkHealth.Oversized", "Kit.linkHealth.UnknownPackets", "Kit.linkHealth.CommandsDropped",
+                       # where the bytes went before frame detection: the UART read them all, its ring kept them
+                       # (the fuzzer's batches fit the ring: a drop here is a failure)
+                       "Kit.linkHealth.UartBytesReceived", "Kit.linkHealth.UartRingDrops")
+DISPATCHER_COUNT_CHANNELS = (DISPATCHER_ERRORS, "CommandsDispatched")
+
+
+def count_channels(names: Dictionary) -> tuple[str, ...]:
+    return LINK_COUNT_CHANNELS + tuple(names.of_dispatcher(c) for c in DISPATCHER_COUNT_CHANNELS)
 
 
 def answered(link: Downlink, noops: int) -> bool:
-    return link.events[NOOP_EVENT] >= noops
+    return link.events[link.dictionary.noop_event] >= noops
 
 
 # The boot's own events fill the downlink's event queue for a while after
@@ -249,7 +258,7 @@ DOWNLINK_OVERFLOW_EVENT = "Kit.comQueue.QueueOverflow"
 def settle(link: Downlink, seed: int) -> None:
     """Wait, by the deployment's own time tags, for a telemetry sample taken
     SETTLE_S after the last NO_OP's answer."""
-    settled = link.event_time.get(NOOP_EVENT, 0.0) + SETTLE_S
+    settled = link.event_time.get(link.dictionary.noop_event, 0.0) + SETTLE_S
     if not link.pump(lambda: link.telemetry_time.get(HEARTBEAT_CHANNEL, 0.0) >= settled, REPLY_TIMEOUT_S):
         raise KitError(f"no {HEARTBEAT_CHANNEL} telemetry after the last batch (seed {seed})")
 
@@ -339,7 +348,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
     console lines that show a halt, or ""."""
     deployment = Deployment.from_dictionary(dictionary)
     rng = random.Random(seed)
-    outcome = Outcome(seed, dispatcher_telemetry=deployment.dispatcher_telemetry)
+    outcome = Outcome(seed, dispatcher=deployment.dispatcher, dispatcher_telemetry=deployment.dispatcher_telemetry)
     noop = frame(command(deployment.noop))
     if per_batch * INVALID_FRAME_MAX + len(noop) + len(PADDING) > UART_RING_BYTES:
         raise ValueError(f"{per_batch} invalid frames a batch could overrun the UART's {UART_RING_BYTES}-byte ring")
@@ -361,7 +370,7 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
             if len(outcome.missed) >= MISSED_ANSWERS_MAX:
                 break
         if outcome.halt:
-            outcome.noops_answered = link.events[NOOP_EVENT]
+            outcome.noops_answered = link.events[link.dictionary.noop_event]
             outcome.events = link.events
             return outcome
         # The counters after the last batch: the last NO_OP's answer means
@@ -383,9 +392,10 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_frames: int, per
                 return send_closed_by_noop(link, bad, noop, outcome, halted)
 
             outcome.read_out_overflowed = read_out(link, play, seed).overflowed
-        outcome.noops_answered = link.events[NOOP_EVENT]
+        outcome.noops_answered = link.events[link.dictionary.noop_event]
         outcome.events = link.events
-        outcome.telemetry = {name: int(link.telemetry[name]) for name in COUNT_CHANNELS if name in link.telemetry}
+        outcome.telemetry = {name: int(link.telemetry[name]) for name in count_channels(link.dictionary)
+                             if name in link.telemetry}
     finally:
         link.close()
     return outcome

@@ -85,7 +85,6 @@ from kittools.link.serial_points import (
 )
 from kittools.workspace import KitError
 
-NOOP_EVENT = "Kit.cmdDisp.NoOpReceived"
 DOWNLINK_PACKET_EVENT = "Kit.load.DownlinkLoadPacket"
 # The wait for a segment after a request, before it is sent again
 REQUEST_RETRY_S = 1.0
@@ -114,7 +113,8 @@ class Driver:
         self.link = link
         self.baud = baud
         self.opcodes = opcodes
-        self.noop = frame(command(opcodes["Kit.cmdDisp.CMD_NO_OP"]))
+        self.noop = frame(command(link.dictionary.noop_opcode))
+        self.noop_event = link.dictionary.noop_event
 
     def send(self, name: str, arguments: bytes = b"") -> None:
         self.link.send(frame(command(self.opcodes[name], arguments)))
@@ -153,7 +153,7 @@ class Driver:
         """Request a segment and keep up the offered traffic until its SWEEP
         lines are printed; then send `unload` (the command that takes the
         downlink load off) and account for what got through."""
-        answered_before = self.link.events[NOOP_EVENT]
+        answered_before = self.link.events[self.noop_event]
         before = LinkCounts.of(self.link)
         pacer = Stopwatch(self.link)  # the offer paces itself, the line carries it
         line = Line(self.link, self.baud)
@@ -193,9 +193,9 @@ class Driver:
         # dropped it) shows as fewer answers than commands
         expected = answered_before + traffic.commands_sent
         last = self.link.now
-        self.link.pump(lambda: self.link.events[NOOP_EVENT] >= expected or self.link.now - last > SETTLE_S,
+        self.link.pump(lambda: self.link.events[self.noop_event] >= expected or self.link.now - last > SETTLE_S,
                        REPLY_TIMEOUT_S)
-        traffic.noops_answered = self.link.events[NOOP_EVENT] - answered_before
+        traffic.noops_answered = self.link.events[self.noop_event] - answered_before
         # LinkHealth writes its counts every 100 ms, changed or not: a sample
         # taken SETTLE_S after the last answer is settled (the ring drained)
         counts = settled_counts(self.link, self.link.now + SETTLE_S,

@@ -21,10 +21,12 @@ from elftools.elf.elffile import ELFFile
 from kittools.build.folder import BuildFolder
 from kittools.workspace import KitError
 
-#: The compilation unit that declares every instance of the topology (F´'s autocoder)
-TOPOLOGY_UNIT = "KitTopologyAc.cpp"
-#: The namespace of the topology's instances
-NAMESPACE = "Kit"
+#: How the compilation unit that defines every instance of the topology ends
+#: (F´'s autocoder: <Topology>TopologyAc.cpp, KitTopologyAc.cpp in the
+#: reference deployment, ThermalTopologyAc.cpp in tests/thermal). Its
+#: instances are in their modules' namespaces: the deployment's, and Kit
+#: for the kit's subtopologies'
+TOPOLOGY_UNIT = "TopologyAc.cpp"
 _QUALIFIERS = ("DW_TAG_typedef", "DW_TAG_const_type", "DW_TAG_volatile_type")
 _CLASSES = ("DW_TAG_class_type", "DW_TAG_structure_type")
 _DEPTH = 16  # bound on typedef chains, base-class chains and scopes
@@ -173,16 +175,22 @@ class DebugInfo:
         return None
 
     def instances(self) -> list[Instance]:
-        """Every component instance of the topology (classes derived from F´'s ObjBase)."""
-        for unit in self._units:
-            top = unit.get_top_DIE()
-            if name(top).endswith(TOPOLOGY_UNIT):
-                return [Instance(name(v), cls) for scope in top.iter_children()
-                        if scope.tag == "DW_TAG_namespace" and name(scope) == NAMESPACE
-                        for v in scope.iter_children() if v.tag == "DW_TAG_variable"
-                        for cls in [self.type_of(v)]
-                        if cls is not None and cls.tag in _CLASSES and self.derives_from(cls, "ObjBase")]
-        raise KitError(f"{self.path}: no compilation unit {TOPOLOGY_UNIT} (is this the kit's deployment?)")
+        """Every component instance of the topology (classes derived from F´'s
+        ObjBase, defined in a namespace of the topology's unit)."""
+        units = [unit.get_top_DIE() for unit in self._units if name(unit.get_top_DIE()).endswith(TOPOLOGY_UNIT)]
+        if len(units) != 1:
+            raise KitError(f"{self.path}: {len(units)} compilation units named *{TOPOLOGY_UNIT}, expected the one "
+                           "of the deployment's topology (is this a kit build?)")
+        found: list[Instance] = []
+        scopes = [scope for scope in units[0].iter_children() if scope.tag == "DW_TAG_namespace"]
+        for _ in range(_DEPTH):  # nested modules are nested namespaces
+            if not scopes:
+                break
+            found += [Instance(name(v), cls) for scope in scopes for v in scope.iter_children()
+                      if v.tag == "DW_TAG_variable" for cls in [self.type_of(v)]
+                      if cls is not None and cls.tag in _CLASSES and self.derives_from(cls, "ObjBase")]
+            scopes = [inner for scope in scopes for inner in scope.iter_children() if inner.tag == "DW_TAG_namespace"]
+        return found
 
 
 def _count(array: Any) -> int:

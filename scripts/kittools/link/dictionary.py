@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: Apache-2.0
+"""What the ground tools read from a build's F´ JSON dictionary: its commands'
+opcodes, its constants, its channels and events, and the deployment's
+command dispatcher.
+
+The dispatcher is found, not named: every deployment has one (F´'s
+`Svc.CommandDispatcher`, or fprime-baremetal's passive form), under the
+instance name and module its topology gives it (`Kit.cmdDisp` in the
+reference deployment, `Thermal.cmdDisp` in tests/thermal). It is the one
+instance with F´'s dispatcher's own command, CMD_NO_OP; its events and
+channels are named from it.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from kittools.workspace import KitError
+
+#: The command only F´'s command dispatcher (either form) has
+NOOP_COMMAND = "CMD_NO_OP"
+#: ... and the event it answers it with
+NOOP_EVENT = "NoOpReceived"
+
+
+@dataclass(frozen=True)
+class Dictionary:
+    path: Path
+    opcodes: dict[str, int]
+    constants: dict[str, Any]
+    channels: frozenset[str]
+    events: frozenset[str]
+    #: The dispatcher's qualified instance name, e.g. "Kit.cmdDisp"
+    dispatcher: str
+
+    @staticmethod
+    def read(path: Path) -> Dictionary:
+        try:
+            data = json.loads(path.read_text())
+            opcodes = {str(c["name"]): int(c["opcode"]) for c in data["commands"]}
+            constants = {str(c["qualifiedName"]): c["value"] for c in data.get("constants", [])}
+            channels = frozenset(str(c["name"]) for c in data.get("telemetryChannels", []))
+            events = frozenset(str(e["name"]) for e in data.get("events", []))
+        except (OSError, ValueError, KeyError, TypeError) as error:
+            raise KitError(f"{path} is not an F´ JSON dictionary a kit build writes: {error}") from None
+        return Dictionary(path, opcodes, constants, channels, events, dispatcher_of(path, opcodes))
+
+    def of_dispatcher(self, name: str) -> str:
+        """A command, event or channel of the dispatcher, by its own name."""
+        return f"{self.dispatcher}.{name}"
+
+    @property
+    def noop_opcode(self) -> int:
+        return self.opcodes[self.of_dispatcher(NOOP_COMMAND)]
+
+    @property
+    def noop_command(self) -> str:
+        return self.of_dispatcher(NOOP_COMMAND)
+
+    @property
+    def noop_event(self) -> str:
+        return self.of_dispatcher(NOOP_EVENT)
+
+    def opcode(self, name: str) -> int:
+        """A command's opcode; KitError naming the dictionary where it lacks it."""
+        try:
+            return self.opcodes[name]
+        except KeyError:
+            raise KitError(f"{self.path} has no command {name}: is it a dictionary of a kit build of this "
+                           "version?") from None
+
+
+def dispatcher_of(path: Path, opcodes: dict[str, int]) -> str:
+    """The instance owning CMD_NO_OP; KitError where none or several do."""
+    owners = sorted(name.removesuffix(f".{NOOP_COMMAND}") for name in opcodes if name.endswith(f".{NOOP_COMMAND}"))
+    if len(owners) != 1:
+        found = f"{len(owners)}: {', '.join(owners)}" if owners else "none"
+        raise KitError(f"{path}: the ground tools need exactly one command dispatcher (the instance with "
+                       f"{NOOP_COMMAND}), found {found}")
+    return owners[0]
