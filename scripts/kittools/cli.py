@@ -67,6 +67,9 @@ def parser() -> argparse.ArgumentParser:
     t.add_argument("--subset", metavar="K/N",
                    help="this machine's share K of a full run split across N (twister's --subset); join the "
                         "shards' --output folders with kit report --merge")
+    add_deployment_option(t, "with it, that deployment's whole run alone: every model on --board (default: "
+                             f"{REFERENCE_BOARD}), nominal, load sweep, faults, its ground link, its report; the F´ "
+                             "deployment to test")
     t.add_argument("--skip-twister", action="store_true")
     t.add_argument("--skip-host", action="store_true")
     t.add_argument("--skip-python", action="store_true")

@@ -16,6 +16,7 @@ from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.link import serial_points
 from kittools.suite import (
     budget,
+    deployment_run,
     determinism,
     device_runs,
     ground_checks,
@@ -71,6 +72,8 @@ def serial_plays(args: argparse.Namespace) -> int:
 def run(args: argparse.Namespace) -> int:
     if args.device_testing or args.hardware_map:
         return device_plan(args).run()
+    if args.deployment:
+        return deployment_plan(args).run()
     if args.quick:
         return quick_plan(args).run()
     return FullRun(args).plan().run()
@@ -141,16 +144,11 @@ class FullRun:
                                              serial_plays=serial_plays(self.args))
 
     def second_deployment(self) -> Tally:
-        """The second deployment (tests/thermal), built and played through
-        the seam in every model on the reference board: its nominal run,
-        through twister like the reference's (the whole comparison, with the
-        load sweep, is `kit compare --deployment tests/thermal`: its 1 Hz
-        group makes every sweep point a second long)."""
+        """The second deployment (tests/thermal) through the seam, every
+        model on the reference board: its whole run and report
+        (kittools.suite.deployment_run)."""
         chosen = deployment.resolve(SECOND_DEPLOYMENT)
-        out_dir = self.log_dir / f"deployment{chosen.output_suffix()}"
-        return twister.run_twister([REFERENCE_BOARD], out_dir, out_dir / "twister", scenarios=("nominal",),
-                                   exclude_tags=(twister.PROFILE_TAG,), models=tuple(variants.names()),
-                                   with_floor=False, cmake_args=tuple(chosen.cmake_args()))
+        return deployment_run.run_deployment(chosen, REFERENCE_BOARD, deployment_log_dir(self.log_dir, chosen))
 
     def budget(self, board: str) -> Tally:
         self.size_reports.result()
@@ -208,7 +206,8 @@ class FullRun:
                     verdict.report_side_by_side, boards + self.small + self.built_only, self.log_dir))
             if REFERENCE_BOARD in boards and last_share(subset):
                 steps.add_qemu(f"second deployment: {deployment.label(SECOND_DEPLOYMENT)} through the seam, every "
-                               f"model on {REFERENCE_BOARD}, nominal", self.second_deployment)
+                               f"model on {REFERENCE_BOARD}: {', '.join(deployment_run.SCENARIOS)}, ground link, "
+                               "report", self.second_deployment)
         # A split run shares out the steps beside twister: the porting check (the
         # longest) to the first shard, the host's and the device path to the
         # last (measured on two shares of today's suite: the porting check took
@@ -233,6 +232,31 @@ class FullRun:
                            f"copy ({', '.join(porting.PORTING_MODELS)})",
                            functools.partial(porting.run_porting_check, self.log_dir, args.full))
         return steps
+
+
+def deployment_log_dir(log_dir: Path, chosen: deployment.Deployment) -> Path:
+    """Where a deployment's run keeps its builds, logs and report."""
+    return log_dir / f"deployment{chosen.output_suffix()}"
+
+
+def deployment_plan(args: argparse.Namespace) -> Plan:
+    """kit test --deployment DIR: that deployment's whole run through the
+    seam on each board (kittools.suite.deployment_run), nothing else."""
+    if args.quick or args.subset or args.update_baseline or args.full or args.device_testing:
+        raise KitError("--deployment is a deployment's own run: without --quick, --subset, --full, "
+                       "--update-baseline or --device-testing (the baselines are the reference deployment's)")
+    boards = args.board or [REFERENCE_BOARD]
+    for board in boards:
+        platforms.check_runs_here(board)
+    check_provisioned()
+    chosen = deployment.resolve(args.deployment)
+    log_dir = deployment_log_dir(Path(args.output).resolve(), chosen)
+    steps = Plan()
+    for board in boards:
+        steps.add_qemu(f"{chosen.name} through the seam, every model on {board}: "
+                       f"{', '.join(deployment_run.SCENARIOS)}, ground link, report",
+                       functools.partial(deployment_run.run_deployment, chosen, board, log_dir))
+    return steps
 
 
 def quick_plan(args: argparse.Namespace) -> Plan:

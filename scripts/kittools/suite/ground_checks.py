@@ -55,16 +55,17 @@ SERIAL_SWEEP_BOARD = REFERENCE_BOARD
 SERIAL_PLAYS_CI = 1
 
 
-def ground_builds(required: bool = True) -> list[tuple[str, Path]]:
-    """(platform, build) of every build of the last twister run that can
-    play the ground scenario; none is an error where `required`."""
+def ground_builds(required: bool = True, twister_out: Path = TWISTER_OUT) -> list[tuple[str, Path]]:
+    """(platform, build) of every build of the last twister run (in
+    `twister_out`) that can play the ground scenario; none is an error where
+    `required`."""
     # The comparison's builds, and on a small part the profile's that fit it
-    candidates = results.suite_builds(TWISTER_OUT) + [
-        (platform, build) for platform, build in results.suite_builds(TWISTER_OUT, prefix=results.PROFILE_PREFIX)
+    candidates = results.suite_builds(twister_out) + [
+        (platform, build) for platform, build in results.suite_builds(twister_out, prefix=results.PROFILE_PREFIX)
         if platforms.is_small_part(platform)]
     builds = [(platform, build) for platform, build in candidates if ground.serves_ground(build)]
     if not builds and required:
-        raise KitError(f"twister made no build of the suite that can play the ground scenario under {TWISTER_OUT}")
+        raise KitError(f"twister made no build of the suite that can play the ground scenario under {twister_out}")
     return builds
 
 
@@ -92,9 +93,30 @@ def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: 
     `required` (a shard of a split run): a run that made none checks none.
     The serial-load sweep plays each level `serial_plays` times."""
     builds = ground_builds(required)
-    tally = Tally()
     raw_link = functools.partial(raw_link_checks, serial_plays=serial_plays)
-    for checks, workers in ((station_checks, jobs), (raw_link, raw_link_jobs)):
+    return _each_build(builds, log_dir, ((station_checks, jobs), (raw_link, raw_link_jobs)))
+
+
+def run_deployment_link(log_dir: Path, twister_out: Path) -> Tally:
+    """The ground link's checks of a deployment other than the reference
+    (kit test's second deployment), on every ground build of its twister run
+    in `twister_out`: the integration suite through fprime-gds (its tests of
+    the reference's own components skip themselves), another build's
+    dictionary refused, and uplink fuzzing (FUZZ_INVALID_FRAMES_OTHER_BOARDS
+    frames: the dispatcher's refusals are the deployment's). The flood and
+    the serial-load sweep measure the kit's link, the same code in every
+    deployment: they run on the reference's builds."""
+    builds = ground_builds(twister_out=twister_out)
+    return _each_build(builds, log_dir, ((station_checks, INTEGRATION_JOBS), (deployment_link_checks, RAW_LINK_JOBS)))
+
+
+_Checks = Callable[[str, Path, Path], Tally]
+
+
+def _each_build(builds: list[tuple[str, Path]], log_dir: Path, passes: tuple[tuple[_Checks, int], ...]) -> Tally:
+    """Each pass's checks on every build, that many builds at a time, one pass after the other."""
+    tally = Tally()
+    for checks, workers in passes:
         with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
             for result in pool.map(checks, [p for p, _ in builds], [b for _, b in builds],
                                    [log_dir] * len(builds)):
@@ -145,6 +167,16 @@ def raw_link_checks(platform: str, build: Path, log_dir: Path, serial_plays: int
         checks.append(functools.partial(serial_sweep_build, plays=serial_plays))
     for check in checks:
         tally.add(check(build, name, logs))
+    return tally
+
+
+def deployment_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
+    """A second deployment's build on the raw link (run_deployment_link):
+    another build's dictionary refused, then uplink fuzzing."""
+    name = _ground_name(platform, build)
+    logs = results.integration_logs(log_dir, platform, build.name)
+    tally = foreign_dictionary_build(build, name, logs)
+    tally.add(fuzz_build(build, name, logs, FUZZ_INVALID_FRAMES_OTHER_BOARDS))
     return tally
 
 
@@ -237,13 +269,15 @@ def _played_booted(link: ground.Link, play: Callable[[Callable[[], str]], _R], c
             console_log.write_text(qemu.text() + "\n")
 
 
-def fuzz_build(build: Path, name: str, logs: Path) -> Tally:
-    """Boot a ground build and fuzz its uplink (kittools.link.fuzz); the outcome
+def fuzz_build(build: Path, name: str, logs: Path, frames: int | None = None) -> Tally:
+    """Boot a ground build and fuzz its uplink (kittools.link.fuzz) with
+    `frames` invalid frames (by default the board's share); the outcome
     goes to fuzz.json beside the other logs."""
     link = ground.link_of(build)
     started = time.monotonic()
-    reference = link.board.split("/")[0] == REFERENCE_BOARD
-    frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
+    if frames is None:
+        reference = link.board.split("/")[0] == REFERENCE_BOARD
+        frames = FUZZ_INVALID_FRAMES if reference else FUZZ_INVALID_FRAMES_OTHER_BOARDS
     outcome = _played_booted(
         link, lambda halted: fuzz.run(link.socket, link.dictionary, FUZZ_SEED, frames, halted=halted),
         logs / "fuzz.console.log", f"  {name}: fuzzing (seed {FUZZ_SEED})")

@@ -219,8 +219,7 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
     builds = [(platform, build, run) for platform, build in suite_builds(twister_out, board)
               if (run := played(build, "nominal")) is not None and run.of_kind("BANNER")]
     reports = by_layer.reports([build for _, build, _ in builds])
-    floor_builds = [build for _, build in suite_builds(twister_out, board, floor.PREFIX)]
-    floors = Floors(floor.records(floor_builds), floor.zephyr_records(floor_builds))
+    floors = floors_of(twister_out, board)
     found = []
     for (platform, build, run), (rom, ram) in zip(builds, reports, strict=True):
         sweep = played(build, "load")
@@ -239,6 +238,13 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
              for kind, report in (("rom", rom), ("ram", ram))},
             sizing.measure(build, [r.fields for r in run.of_kind("QUEUE")]).to_json()))
     return found, floors
+
+
+def floors_of(twister_out: Path, board: str) -> Floors:
+    """The kernel floor's records of a twister run's floor builds on a board
+    (none where it made none: a deployment's run takes the suite's)."""
+    floor_builds = [build for _, build in suite_builds(twister_out, board, floor.PREFIX)]
+    return Floors(floor.records(floor_builds), floor.zephyr_records(floor_builds))
 
 
 def assemble(found: list[Played], floors: Floors, board: str) -> model.Results:
