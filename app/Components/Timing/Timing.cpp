@@ -168,9 +168,9 @@ void Timing::cycleEnd_handler(FwIndexType portNum, U32 context) {
         this->log_WARNING_HI_RateGroupSlip(static_cast<U8>(portNum), rg.cycles - 1, late);
         this->tlmWrite_Slips(this->totalSlips());
     }
-    // Telemetry at 10 Hz of the fast group: enough for an operator, and it keeps
-    // the probe's own cost out of the 1 kHz budget.
-    if (portNum == 0 && (rg.cycles % TLM_DECIMATION) == 0) {
+    // Telemetry of the fast group at 10 Hz: enough for an operator, and it
+    // keeps the probe's own cost out of the fastest group's budget.
+    if (portNum == 0 && (rg.cycles % tlmDecimation(rg.spec)) == 0) {
         this->tlmWrite_FastCycles(rg.cycles);
         this->tlmWrite_FastMaxLatency(rg.latency.max());
     }

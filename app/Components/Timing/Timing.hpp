@@ -97,7 +97,18 @@ class Timing final : public TimingComponentBase {
     void MEASURE_SEGMENT_cmdHandler(FwOpcodeType opCode, U32 cmdSeq, SegmentAxis axis, U32 point, U32 level, U32 ticks)
         override;
 
-    static constexpr U32 TLM_DECIMATION = 100;
+#if defined(CONFIG_KIT_TICK_HZ)
+    static constexpr U32 TICK_HZ = CONFIG_KIT_TICK_HZ;  // app/Kconfig
+#else
+    static constexpr U32 TICK_HZ = 1000;  // the host's unit tests: the default tick
+#endif
+    //! The fastest group's telemetry rate: 10 Hz, whatever its own rate
+    static constexpr U32 TLM_HZ = 10;
+    //! Its cycles between two telemetry writes (100 at 1 kHz, 5 at 50 Hz)
+    static U32 tlmDecimation(const RateGroupSpec& spec) {
+        const U32 cycles = TICK_HZ / (TLM_HZ * spec.divisor);
+        return (cycles > 0U) ? cycles : 1U;
+    }
 
     U32 releaseTick(const RateGroupRecord& rg) const;
     //! Back to the configured, empty state, in place (a record is ~1.6 KiB: no temporaries)

@@ -148,7 +148,11 @@ class FullRun:
         model on the reference board: its whole run and report
         (kittools.suite.deployment_run)."""
         chosen = deployment.resolve(SECOND_DEPLOYMENT)
-        return deployment_run.run_deployment(chosen, REFERENCE_BOARD, deployment_log_dir(self.log_dir, chosen))
+        # Its serial-load sweep in the full run only: about 50 s a model,
+        # and the link it measures is the kit's, which CI's run sweeps on
+        # the reference deployment's builds
+        return deployment_run.run_deployment(chosen, REFERENCE_BOARD, deployment_log_dir(self.log_dir, chosen),
+                                             serial_plays=ground_checks.SERIAL_PLAYS_CI if self.args.full else 0)
 
     def budget(self, board: str) -> Tally:
         self.size_reports.result()
@@ -255,7 +259,8 @@ def deployment_plan(args: argparse.Namespace) -> Plan:
     for board in boards:
         steps.add_qemu(f"{chosen.name} through the seam, every model on {board}: "
                        f"{', '.join(deployment_run.SCENARIOS)}, ground link, report",
-                       functools.partial(deployment_run.run_deployment, chosen, board, log_dir))
+                       functools.partial(deployment_run.run_deployment, chosen, board, log_dir,
+                                         serial_plays=ground_checks.SERIAL_PLAYS_CI))
     return steps
 
 

@@ -24,10 +24,13 @@ from kittools.workspace import check_board
 SCENARIOS = ("nominal", "load", "faults")
 
 
-def run_deployment(chosen: Deployment, board: str, out_dir: Path, floors_from: Path = TWISTER_OUT) -> Tally:
+def run_deployment(chosen: Deployment, board: str, out_dir: Path, floors_from: Path = TWISTER_OUT,
+                   serial_plays: int = 0) -> Tally:
     """Every model of `chosen` on `board`: SCENARIOS through twister, then
-    the ground link's checks (ground_checks.run_deployment_link), then its
-    results (<out_dir>/<board folder>/results.json) and report (.../report/).
+    the ground link's checks (ground_checks.run_deployment_link; the
+    serial-load sweep where `serial_plays`, each level that many times),
+    then its results (<out_dir>/<board folder>/results.json) and report
+    (.../report/).
     The kernel floor is the board's, not the deployment's: it is taken from
     the suite's twister run in `floors_from` where that has it, else measured."""
     twister_out = out_dir / "twister"
@@ -36,7 +39,7 @@ def run_deployment(chosen: Deployment, board: str, out_dir: Path, floors_from: P
     tally = twister.run_twister([board], out_dir, twister_out, scenarios=SCENARIOS,
                                 exclude_tags=(twister.PROFILE_TAG,), models=tuple(variants.names()),
                                 with_floor=not suite_floors.paths, cmake_args=tuple(chosen.cmake_args()))
-    tally.add(ground_checks.run_deployment_link(out_dir, twister_out))
+    tally.add(ground_checks.run_deployment_link(out_dir, twister_out, serial_plays))
     verdict.make_size_reports(twister_out)
     found, floors = results.collect(twister_out, board, out_dir)
     floors.add(suite_floors)

@@ -97,17 +97,15 @@ def run_integration(log_dir: Path, jobs: int = INTEGRATION_JOBS, raw_link_jobs: 
     return _each_build(builds, log_dir, ((station_checks, jobs), (raw_link, raw_link_jobs)))
 
 
-def run_deployment_link(log_dir: Path, twister_out: Path) -> Tally:
+def run_deployment_link(log_dir: Path, twister_out: Path, serial_plays: int = 0) -> Tally:
     """The ground link's checks of a deployment other than the reference
-    (kit test's second deployment), on every ground build of its twister run
-    in `twister_out`: the integration suite through fprime-gds (its tests of
-    the reference's own components skip themselves), another build's
-    dictionary refused, and uplink fuzzing (FUZZ_INVALID_FRAMES_OTHER_BOARDS
-    frames: the dispatcher's refusals are the deployment's). The flood and
-    the serial-load sweep measure the kit's link, the same code in every
-    deployment: they run on the reference's builds."""
+    (kit test --deployment, and kit test's second deployment), on every
+    ground build of its twister run in `twister_out`: the integration suite
+    through fprime-gds (its tests of the reference's own components skip
+    themselves), then deployment_link_checks."""
     builds = ground_builds(twister_out=twister_out)
-    return _each_build(builds, log_dir, ((station_checks, INTEGRATION_JOBS), (deployment_link_checks, RAW_LINK_JOBS)))
+    raw_link = functools.partial(deployment_link_checks, serial_plays=serial_plays)
+    return _each_build(builds, log_dir, ((station_checks, INTEGRATION_JOBS), (raw_link, RAW_LINK_JOBS)))
 
 
 _Checks = Callable[[str, Path, Path], Tally]
@@ -170,13 +168,22 @@ def raw_link_checks(platform: str, build: Path, log_dir: Path, serial_plays: int
     return tally
 
 
-def deployment_link_checks(platform: str, build: Path, log_dir: Path) -> Tally:
-    """A second deployment's build on the raw link (run_deployment_link):
-    another build's dictionary refused, then uplink fuzzing."""
+def deployment_link_checks(platform: str, build: Path, log_dir: Path, serial_plays: int = 0) -> Tally:
+    """Another deployment's build on the raw link (run_deployment_link):
+    another build's dictionary refused, uplink fuzzing
+    (FUZZ_INVALID_FRAMES_OTHER_BOARDS frames: the dispatcher's refusals are
+    the deployment's), the flood, and where `serial_plays` the serial-load
+    sweep, each level played that many times (its file axis where the
+    deployment has F´'s file downlink). File-uplink fuzzing where it has
+    F´'s file uplink."""
     name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
     tally = foreign_dictionary_build(build, name, logs)
     tally.add(fuzz_build(build, name, logs, FUZZ_INVALID_FRAMES_OTHER_BOARDS))
+    tally.add(file_fuzz_build(build, name, logs))
+    tally.add(flood_build(build, name, logs))
+    if serial_plays:
+        tally.add(serial_sweep_build(build, name, logs, serial_plays))
     return tally
 
 
