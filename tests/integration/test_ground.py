@@ -29,12 +29,18 @@ SETPOINT_LIMIT = 20000
 HEALTH_WATCH_S = 2.0
 
 
+def _absent(service: str) -> None:
+    """Skips a test of an F´ service the build does not have, and says why."""
+    pytest.skip(f"this build has no F´ {service}: its deployment, or its board's profile for this model, "
+                "leaves it out")
+
+
 def _services(api: Any, command: str) -> None:
     """Skips a test of F´'s health and version services on a build whose
-    board profile leaves them out (CONFIG_KIT_SERVICE_CDH: its dictionary
+    deployment or board profile leaves them out (CONFIG_KIT_SERVICE_CDH: its dictionary
     has neither; the firmware's record says KIT HEALTH services=absent)."""
     if command not in api.dictionaries.command_name:
-        pytest.skip("this board's profile leaves F´'s health and version services out for this model")
+        _absent("health and version services")
 
 
 def _dispatcher(api: Any, name: str) -> str:
@@ -125,7 +131,7 @@ def _parameter_file(api: Any) -> str:
     leaves it out (CONFIG_KIT_SERVICE_PARAMS: the record says KIT RAMFS
     mount=absent)."""
     if "Kit.prmDb.PRM_SAVE_FILE" not in api.dictionaries.command_name:
-        pytest.skip("this board's profile leaves F´'s parameter database out for this model")
+        _absent("parameter database")
     return str(api.dictionaries.constant_name["Kit.RamFs.parameterFile"])
 
 
@@ -276,7 +282,7 @@ def _bulk_file(api: Any, seed: int) -> tuple[str, int]:
     holds); returns its name and the bytes it holds. Skips a test on a build
     whose board profile leaves the file downlink out."""
     if "Kit.fileDownlink.SendFile" not in api.dictionaries.command_name:
-        pytest.skip("this board's profile leaves F´'s file downlink out for this model")
+        _absent("file downlink")
     bulk = str(api.dictionaries.constant_name["Kit.RamFs.bulkFile"])
     api.send_and_assert_command("Kit.load.FILL_FILE", [bulk, FILL_ASK_BYTES, seed], max_delay=TIMEOUT_S)
     filled = api.assert_event("Kit.load.FileFilled", timeout=TIMEOUT_S)
@@ -326,7 +332,7 @@ def _file_uplink(api: Any) -> None:
     """Skips a test of the file uplink on a build whose board profile leaves
     it out (CONFIG_KIT_SERVICE_FILE_UPLINK)."""
     if "Kit.fileUplink.FilesReceived" not in api.dictionaries.channel_name:
-        pytest.skip("this board's profile leaves F´'s file uplink out for this model")
+        _absent("file uplink")
 
 
 def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> None:
@@ -373,7 +379,7 @@ def _sequence(api: Any, tmp_path: Path) -> tuple[str, bytes]:
     sequence generator; skips a test of the sequencer on a build whose
     board profile leaves it out (CONFIG_KIT_SERVICE_SEQUENCER)."""
     if "Kit.cmdSeq.CS_RUN" not in api.dictionaries.command_name:
-        pytest.skip("this board's profile leaves F´'s command sequencer out for this model")
+        _absent("command sequencer")
     _reference_component(api, "Kit.controller.SET_SETPOINT")
     from fprime_gds.common.tools.seqgen import generateSequence
 

@@ -236,7 +236,7 @@ def string_argument(text: str) -> bytes:
 
 def ping_enable(opcodes: dict[str, int], entry: str, enabled: bool) -> bytes | None:
     """The frame of health's HLTH_PING_ENABLE for `entry`, or None where
-    the build has no health (its board's profile leaves it out)."""
+    the build has no health (its deployment, or its board's profile, leaves it out)."""
     opcode = opcodes.get("Kit.health.HLTH_PING_ENABLE")
     if opcode is None:
         return None

@@ -311,7 +311,8 @@ def file_fuzz_build(build: Path, name: str, logs: Path) -> Tally:
     board profile leaves the file uplink out is skipped, and said to be."""
     link = ground.link_of(build)
     if not file_fuzz.has_file_uplink(link.dictionary):
-        say(f"  {name}: file-uplink fuzzing: skipped (this board's profile leaves F´'s file uplink out)")
+        say(f"  {name}: file-uplink fuzzing: skipped (this build has no F´ file uplink: its deployment, or its "
+            "board's profile for this model, leaves it out)")
         return Tally()
     started = time.monotonic()
     outcome = _played_booted(
