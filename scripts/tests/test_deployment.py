@@ -122,18 +122,53 @@ def test_the_second_deployment_passes_the_seam_and_shares_nothing_with_the_refer
         assert rate in table
 
 
-def test_ci_plays_the_second_deployment_in_every_model_through_the_seam(monkeypatch, tmp_path: Path):
-    from kittools import variants
+def test_ci_makes_the_second_deployments_whole_run_through_the_seam(monkeypatch, tmp_path: Path):
+    """kit test's last step: tests/thermal's run on the reference board, its
+    serial-load sweep in the full run only."""
+    import argparse
+
     from kittools.commands import test as kit_test
-    from kittools.suite import twister
+    from kittools.suite import deployment_run
+    from kittools.suite.counts import Tally
+
+    calls = []
+    monkeypatch.setattr(deployment_run, "run_deployment", lambda *a, **k: calls.append((a, k)) or Tally(41, 0))
+    for full, serial_plays in ((False, 0), (True, 1)):
+        run = object.__new__(kit_test.FullRun)
+        run.log_dir = tmp_path
+        run.args = argparse.Namespace(full=full)
+        assert run.second_deployment() == Tally(41, 0)
+        (chosen, board, out_dir), options = calls[-1]
+        assert chosen.path == KIT_ROOT / "tests" / "thermal"
+        assert board == "qemu_cortex_m3" and out_dir == tmp_path / "deployment-thermal"
+        assert options == {"serial_plays": serial_plays}
+
+
+class _Stop(Exception):
+    pass
+
+
+def test_a_deployments_run_plays_its_scenarios_in_every_model_then_its_ground_link(monkeypatch, tmp_path: Path):
+    from kittools import variants
+    from kittools.suite import deployment_run, ground_checks, twister
     from kittools.suite.counts import Tally
 
     calls = []
     monkeypatch.setattr(twister, "run_twister", lambda *a, **k: calls.append((a, k)) or Tally(4, 0))
-    run = object.__new__(kit_test.FullRun)
-    run.log_dir = tmp_path
-    assert run.second_deployment() == Tally(4, 0)
-    (boards, out_dir, _), options = calls[0]
-    assert boards == ["qemu_cortex_m3"] and out_dir == tmp_path / "deployment-thermal"
-    assert options["models"] == tuple(variants.names()) and options["scenarios"] == ("nominal",)
+
+    def link(out_dir: Path, twister_out: Path, serial_plays: int) -> Tally:
+        calls.append(((out_dir, twister_out, serial_plays), {}))
+        raise _Stop
+
+    monkeypatch.setattr(ground_checks, "run_deployment_link", link)
+    chosen = deployment.resolve(KIT_ROOT / "tests" / "thermal")
+    with pytest.raises(_Stop):
+        deployment_run.run_deployment(chosen, "qemu_cortex_m3", tmp_path, floors_from=tmp_path / "none",
+                                      serial_plays=1)
+    (boards, out_dir, twister_out), options = calls[0]
+    assert boards == ["qemu_cortex_m3"] and out_dir == tmp_path and twister_out == tmp_path / "twister"
+    assert options["models"] == tuple(variants.names()) and options["scenarios"] == ("nominal", "load", "faults")
+    # No suite run to take the board's kernel floor from: the deployment's run measures it
+    assert options["with_floor"] is True
     assert options["cmake_args"] == (f"-DKIT_DEPLOYMENT_DIR={KIT_ROOT / 'tests' / 'thermal'}",)
+    assert calls[1][0] == (tmp_path, tmp_path / "twister", 1)

@@ -33,8 +33,6 @@ class Dictionary:
     constants: dict[str, Any]
     channels: frozenset[str]
     events: frozenset[str]
-    #: The dispatcher's qualified instance name, e.g. "Kit.cmdDisp"
-    dispatcher: str
 
     @staticmethod
     def read(path: Path) -> Dictionary:
@@ -46,7 +44,13 @@ class Dictionary:
             events = frozenset(str(e["name"]) for e in data.get("events", []))
         except (OSError, ValueError, KeyError, TypeError) as error:
             raise KitError(f"{path} is not an F´ JSON dictionary a kit build writes: {error}") from None
-        return Dictionary(path, opcodes, constants, channels, events, dispatcher_of(path, opcodes))
+        return Dictionary(path, opcodes, constants, channels, events)
+
+    @property
+    def dispatcher(self) -> str:
+        """The dispatcher's qualified instance name, e.g. "Kit.cmdDisp";
+        KitError where the dictionary has none, or several."""
+        return dispatcher_of(self.path, self.opcodes)
 
     def of_dispatcher(self, name: str) -> str:
         """A command, event or channel of the dispatcher, by its own name."""
@@ -66,11 +70,16 @@ class Dictionary:
 
     def opcode(self, name: str) -> int:
         """A command's opcode; KitError naming the dictionary where it lacks it."""
-        try:
-            return self.opcodes[name]
-        except KeyError:
-            raise KitError(f"{self.path} has no command {name}: is it a dictionary of a kit build of this "
-                           "version?") from None
+        return int(self._named(self.opcodes, "command", name))
+
+    def constant(self, name: str) -> Any:
+        """A constant's value; KitError naming the dictionary where it lacks it."""
+        return self._named(self.constants, "constant", name)
+
+    def _named(self, table: dict[str, Any], kind: str, name: str) -> Any:
+        if name not in table:
+            raise KitError(f"{self.path} has no {kind} {name}: is it a dictionary of a kit build of this version?")
+        return table[name]
 
 
 def dispatcher_of(path: Path, opcodes: dict[str, int]) -> str:

@@ -55,7 +55,6 @@ from kittools.link.fuzz import (
     send_closed_by_noop,
     settle,
 )
-from kittools.workspace import KitError
 
 START_FIELDS = struct.Struct(">I")  # file size; then the two length-prefixed paths
 END_FIELDS = struct.Struct(">I")  # CFDP checksum
@@ -296,10 +295,7 @@ def has_file_uplink(dictionary: Path) -> bool:
 
 def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:
     names = Dictionary.read(dictionary)
-    try:
-        return str(names.constants[SCRATCH_CONSTANT]), names.noop_opcode
-    except KeyError as missing:
-        raise KitError(f"{dictionary} lacks {missing}: is it this kit's dictionary?") from None
+    return str(names.constant(SCRATCH_CONSTANT)), names.noop_opcode
 
 
 # FileUplink writes its counts (telemetry) when they change, and TlmChan

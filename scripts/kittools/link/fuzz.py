@@ -75,12 +75,8 @@ class Deployment:
     @staticmethod
     def from_dictionary(path: Path) -> Deployment:
         names = Dictionary.read(path)
-        try:
-            accumulator_size = int(names.constants[ACCUMULATOR_CONSTANT])
-        except KeyError:
-            raise KitError(f"{path} lacks {ACCUMULATOR_CONSTANT}: is it this kit's dictionary?") from None
         return Deployment(names.noop_opcode, names.dispatcher, names.opcode(ARGUMENT_COMMAND),
-                          frozenset(names.opcodes.values()), accumulator_size,
+                          frozenset(names.opcodes.values()), int(names.constant(ACCUMULATOR_CONSTANT)),
                           names.of_dispatcher(DISPATCHER_ERRORS) in names.channels)
 
 

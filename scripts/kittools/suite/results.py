@@ -242,7 +242,10 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
 
 def floors_of(twister_out: Path, board: str) -> Floors:
     """The kernel floor's records of a twister run's floor builds on a board
-    (none where it made none: a deployment's run takes the suite's)."""
+    (none where it made none, or there is no run: a deployment's run takes
+    the suite's)."""
+    if not (twister_out / "twister.json").is_file():
+        return Floors()
     floor_builds = [build for _, build in suite_builds(twister_out, board, floor.PREFIX)]
     return Floors(floor.records(floor_builds), floor.zephyr_records(floor_builds))
 
