@@ -49,6 +49,25 @@ function(kit_check_deployment DIR)
                 "subtopology: add `import Kit.${KIT_SUBTOPOLOGY}` to its topology (Top/*.fpp). ${KIT_SEAM_DOC}")
         endif()
     endforeach()
+    # Its rate groups where the kit reads them (app/src/Deployment.hpp): the
+    # counts in Top/KitTopology.hpp, the table RATE_GROUPS in a Top/ source.
+    # Without them the kit's own code fails to compile, far from the cause.
+    set(KIT_COUNTS "${DIR}/Top/KitTopology.hpp")
+    if(EXISTS "${KIT_COUNTS}")
+        file(STRINGS "${KIT_COUNTS}" KIT_COUNT REGEX "RATE_GROUP_COUNT[ \t]*=")
+    endif()
+    file(GLOB KIT_TOPOLOGY_SOURCES "${DIR}/Top/*.cpp")
+    set(KIT_TABLE OFF)
+    foreach(KIT_FILE IN LISTS KIT_TOPOLOGY_SOURCES)
+        file(STRINGS "${KIT_FILE}" KIT_DEFINES REGEX "RateGroupSpec[ \t]+RATE_GROUPS[ \t]*\\[")
+        if(KIT_DEFINES)
+            set(KIT_TABLE ON)
+        endif()
+    endforeach()
+    if(NOT KIT_COUNT OR NOT KIT_TABLE)
+        message(FATAL_ERROR "kit: the kit cannot find the rate groups of '${DIR}': its Top/KitTopology.hpp must "
+            "define RATE_GROUP_COUNT and a Top/*.cpp the table RATE_GROUPS (app/src/Deployment.hpp). ${KIT_SEAM_DOC}")
+    endif()
 endfunction()
 
 # The same check from the kit's commands, before any build starts:

@@ -36,6 +36,8 @@ def _seam(folder: Path, topology: str = SEAM_TOPOLOGY) -> Path:
         (folder / part).mkdir(parents=True, exist_ok=True)
         (folder / part / "CMakeLists.txt").write_text("")
     (folder / "Top" / "topology.fpp").write_text(topology)
+    (folder / "Top" / "KitTopology.hpp").write_text("constexpr FwIndexType RATE_GROUP_COUNT = 1;\n")
+    (folder / "Top" / "KitTopology.cpp").write_text("const RateGroupSpec RATE_GROUPS[RATE_GROUP_COUNT] = {};\n")
     return folder
 
 
@@ -67,6 +69,10 @@ def test_a_topology_may_import_the_instruments_by_their_qualified_name(inside_ki
      "does not import the kit's Instruments subtopology"),
     (lambda root: _seam(root / "z", "module Z {\n  topology Z {\n    import Kit.Instruments\n  }\n}\n"),
      "does not import the kit's GroundLink subtopology"),
+    (lambda root: _seam(root / "r").joinpath("Top", "KitTopology.cpp").unlink() or root / "r",
+     "cannot find the rate groups"),
+    (lambda root: _seam(root / "c").joinpath("Top", "KitTopology.hpp").unlink() or root / "c",
+     "cannot find the rate groups"),
 ])
 def test_a_folder_that_is_not_a_deployment_gets_one_clear_error(inside_kit: Path, make, says):
     with pytest.raises(KitError) as error:
