@@ -11,7 +11,7 @@
 
 enum {
     //! The kit's own, and the controller's parameters' set and save
-    KIT_DEPLOYMENT_COMMANDS = 23,
+    KIT_DEPLOYMENT_COMMANDS = 24,
 #if defined(CONFIG_KIT_SERVICE_CDH)
     KIT_CDH_COMMANDS = 5,  //!< Svc.Health's 3 and Svc.Version's 2
 #else
