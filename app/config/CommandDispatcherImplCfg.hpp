@@ -2,9 +2,10 @@
 // Dispatch table: one entry per registered opcode, and exactly the
 // dictionary's commands (`scripts/kit sizing`: 32 entries for 16 commands
 // left 16 spare, 12 B each, 192 B). The dispatcher asserts at
-// registration when a command has no entry, so a new command needs a larger
-// table: `scripts/kit test` says so first, from the build's dictionary
-// (kittools.sizes.sizing), before anything boots.
+// registration when a command has no entry (CommandDispatcherImpl.cpp:47,
+// at boot), so a new command needs a larger table: `scripts/kit sizing`
+// and the budget step of `scripts/kit test` name the table too small, from
+// the build's dictionary (kittools.sizes.sizing).
 // Sequence tracking: commands in flight from the uplink at once.
 #ifndef CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 #define CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
