@@ -65,6 +65,19 @@ class Sweep:
     spread: dict[tuple[str, int, str], tuple[int, int]] = field(default_factory=dict)
     #: (axis, level, rate group) -> how many times it was played
     plays: dict[tuple[str, int, str], int] = field(default_factory=dict)
+    #: axis -> how the load scenario shaped it (its AXIS record's fields:
+    #: period_us, step_us, top_us, burst, every; docs/results.md)
+    shapes: dict[str, dict[str, int]] = field(default_factory=dict)
+
+    def shape_text(self, axis: str) -> str:
+        """How an axis was shaped, in words ("" where its run did not say)."""
+        shape = self.shapes.get(axis)
+        if shape is None:
+            return ""
+        paced = f", its work on one call in {shape['every']}" if shape["every"] > 1 else ""
+        burst = f", {shape['burst']} message{'s' if shape['burst'] > 1 else ''} a burst" if shape["burst"] else ""
+        return (f"the load's port called each {shape['period_us']:,} µs{paced}{burst}; levels "
+                f"0–{shape['top_us']:,} µs in steps of {shape['step_us']:,} µs")
 
     def repeats(self, axis: str) -> int:
         """How many times each level of an axis was played (the most of any)."""
@@ -139,6 +152,8 @@ def _int(record: dict[str, Any], key: str) -> int:
 
 
 #: What a SWEEP record must hold to be read
+#: The fields of an AXIS record (app/scenarios/load.cpp) the report reads
+AXIS_FIELDS = ("period_us", "step_us", "top_us", "burst", "every")
 SWEEP_FIELDS = ("axis", "level", "unit", "burst", "rg", "hz", "slips", "late_starts", "latency_p99", "latency_max",
                 "jitter_max")
 
@@ -172,4 +187,7 @@ def of_records(records: list[dict[str, Any]]) -> Sweep | None:
             reported[(str(r["axis"]), str(r["rg"]))] = None if value == "none" else int(value)
     spread = {key: (min(p.latency_max for p in found), max(p.latency_max for p in found))
               for key, found in plays.items() if len(found) > 1}
-    return Sweep(points, reported, len(sweeps) - len(whole), spread, {key: len(v) for key, v in plays.items()})
+    shapes = {str(r["name"]): {key: _int(r, key) for key in AXIS_FIELDS} for r in records
+              if r.get("kind") == "AXIS" and all(key in r for key in AXIS_FIELDS)}
+    return Sweep(points, reported, len(sweeps) - len(whole), spread, {key: len(v) for key, v in plays.items()},
+                 shapes)

@@ -314,3 +314,18 @@ def test_health_stops_pinging_the_event_service_with_its_own_command() -> None:
     assert sent == client.frame(client.command(0x2901, b"\x00\x0eKit_eventsPing\x00"))
     assert serial_sweep.ping_enable(opcodes, "Kit_eventsPing", enabled=True) != sent
     assert serial_sweep.ping_enable({}, "Kit_eventsPing", enabled=False) is None
+
+
+def test_the_sweep_table_says_how_the_scenario_shaped_its_axis():
+    """A load paced for a slow group (tests/thermal's 50 Hz slice) says so in its table's title."""
+    lines = sweep_lines("baremetal", None) + ["KIT AXIS name=slice period_us=20000 step_us=2000 top_us=40000 "
+                                              "burst=0 every=4"]
+    records = [console.parse_line(line) for line in lines]
+    found = sweep.of_records([{"kind": r.kind, **r.fields} for r in records if r is not None])
+    assert found is not None
+    assert found.shape_text("slice") == ("the load's port called each 20,000 µs, its work on one call in 4; "
+                                         "levels 0–40,000 µs in steps of 2,000 µs")
+    assert found.shape_text("burst") == ""
+    from kittools.report import tables
+    assert tables.sweep_table({"baremetal": found}, 12e6, "slice").title.startswith(
+        "Load sweep, axis 'slice' (the load's port called each 20,000 µs")

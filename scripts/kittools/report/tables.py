@@ -218,7 +218,8 @@ def sweep_table(found: dict[str, sweep.Sweep], cycles_hz: float, axis: str) -> T
                     f"{v} {fastest} max (µs)" + (" (spread)" if plays > 1 else ""), f"{v} missed deadlines"]
         if v in shedding:
             columns.append(f"{v} load dropped")
-    return Table(f"Load sweep, axis '{axis}'", columns, rows)
+    shape = next((text for v in names if (text := found[v].shape_text(axis))), "")
+    return Table(f"Load sweep, axis '{axis}'" + (f" ({shape})" if shape else ""), columns, rows)
 
 
 def boards_table(datas: list[Results]) -> Table:

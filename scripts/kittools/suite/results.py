@@ -104,7 +104,7 @@ def played(build: Path, scenario: str) -> console.Run | None:
 
 
 # Kinds of record the load scenario adds to a variant's results (the sweep)
-SWEEP_KINDS = ("SWEEP", "BREAK")
+SWEEP_KINDS = ("SWEEP", "BREAK", "AXIS")
 
 
 def _same_board(platform: str, board: str) -> bool:
