@@ -178,3 +178,22 @@ def test_a_deployments_run_plays_its_scenarios_in_every_model_then_its_ground_li
     assert options["with_floor"] is True
     assert options["cmake_args"] == (f"-DKIT_DEPLOYMENT_DIR={KIT_ROOT / 'tests' / 'thermal'}",)
     assert calls[1][0] == (tmp_path, tmp_path / "twister", 1)
+
+
+def test_a_link_record_an_earlier_run_left_never_joins_this_runs_results(monkeypatch, tmp_path: Path):
+    """A deployment's run without the serial sweep, after one with it: the
+    old serial.json would put its axes into the new report."""
+    from kittools.suite import ground_checks, results
+    from kittools.suite.counts import Tally
+
+    logs = results.integration_logs(tmp_path, "qemu_cortex_m3/ti_lm3s6965", "kit.rtos")
+    logs.mkdir(parents=True)
+    for file_name in results.LINK_RECORD_FILES:
+        (logs / file_name).write_text("{}")
+    monkeypatch.setattr(ground_checks, "foreign_dictionary_build", lambda *a: Tally(1, 0))
+    monkeypatch.setattr(ground_checks, "fuzz_build", lambda *a, **k: Tally(1, 0))
+    monkeypatch.setattr(ground_checks, "file_fuzz_build", lambda *a: Tally())
+    monkeypatch.setattr(ground_checks, "flood_build", lambda *a: Tally(1, 0))
+    tally = ground_checks.deployment_link_checks("qemu_cortex_m3/ti_lm3s6965", tmp_path / "kit.rtos", tmp_path)
+    assert tally == Tally(3, 0)
+    assert not any((logs / file_name).exists() for file_name in results.LINK_RECORD_FILES)

@@ -157,33 +157,39 @@ def raw_link_checks(platform: str, build: Path, log_dir: Path, serial_plays: int
     link socket): another build's dictionary refused, uplink fuzzing of
     frames and of file packets, the flood, and on SERIAL_SWEEP_BOARD the
     serial-load sweep, each level played `serial_plays` times."""
-    name = _ground_name(platform, build)
-    logs = results.integration_logs(log_dir, platform, build.name)
-    tally = foreign_dictionary_build(build, name, logs)
-    checks: list[Callable[[Path, str, Path], Tally]] = [fuzz_build, file_fuzz_build, flood_build]
+    checks: list[_BuildCheck] = [fuzz_build, file_fuzz_build, flood_build]
     if check_board(platform) == check_board(SERIAL_SWEEP_BOARD):
         checks.append(functools.partial(serial_sweep_build, plays=serial_plays))
-    for check in checks:
-        tally.add(check(build, name, logs))
-    return tally
+    return _on_raw_link(platform, build, log_dir, checks)
 
 
 def deployment_link_checks(platform: str, build: Path, log_dir: Path, serial_plays: int = 0) -> Tally:
     """Another deployment's build on the raw link (run_deployment_link):
     another build's dictionary refused, uplink fuzzing
     (FUZZ_INVALID_FRAMES_OTHER_BOARDS frames: the dispatcher's refusals are
-    the deployment's), the flood, and where `serial_plays` the serial-load
-    sweep, each level played that many times (its file axis where the
-    deployment has F´'s file downlink). File-uplink fuzzing where it has
-    F´'s file uplink."""
+    the deployment's), file-uplink fuzzing where it has F´'s file uplink,
+    the flood, and where `serial_plays` the serial-load sweep, each level
+    played that many times (its file axis where it has F´'s file downlink)."""
+    checks: list[_BuildCheck] = [functools.partial(fuzz_build, frames=FUZZ_INVALID_FRAMES_OTHER_BOARDS),
+                                 file_fuzz_build, flood_build]
+    if serial_plays:
+        checks.append(functools.partial(serial_sweep_build, plays=serial_plays))
+    return _on_raw_link(platform, build, log_dir, checks)
+
+
+_BuildCheck = Callable[[Path, str, Path], Tally]
+
+
+def _on_raw_link(platform: str, build: Path, log_dir: Path, checks: list[_BuildCheck]) -> Tally:
+    """Another build's dictionary refused, then each check, one after the other."""
     name = _ground_name(platform, build)
     logs = results.integration_logs(log_dir, platform, build.name)
+    # A record file an earlier run's check left would join this run's results
+    for file_name in results.LINK_RECORD_FILES:
+        (logs / file_name).unlink(missing_ok=True)
     tally = foreign_dictionary_build(build, name, logs)
-    tally.add(fuzz_build(build, name, logs, FUZZ_INVALID_FRAMES_OTHER_BOARDS))
-    tally.add(file_fuzz_build(build, name, logs))
-    tally.add(flood_build(build, name, logs))
-    if serial_plays:
-        tally.add(serial_sweep_build(build, name, logs, serial_plays))
+    for check in checks:
+        tally.add(check(build, name, logs))
     return tally
 
 
