@@ -23,7 +23,6 @@ warnings, files received (telemetry) and decode errors (events).
 
 from __future__ import annotations
 
-import json
 import random
 import struct
 from collections import Counter
@@ -289,8 +288,7 @@ class Outcome:
 
 def has_file_uplink(dictionary: Path) -> bool:
     """The build has F´'s file uplink (its board's profile may leave it out)."""
-    data = json.loads(dictionary.read_text())
-    return any(channel["name"] == "Kit.fileUplink.Warnings" for channel in data.get("telemetryChannels", []))
+    return "Kit.fileUplink.Warnings" in Dictionary.read(dictionary).channels
 
 
 def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:

@@ -41,11 +41,9 @@ kittools.link.serial_points, LinkHealth's counts kittools.link.health.
 
 from __future__ import annotations
 
-import json
 import struct
 import time
 from pathlib import Path
-from typing import Any
 
 from kittools.build import runner
 from kittools.link import ground
@@ -60,6 +58,7 @@ from kittools.link.client import (
     frame,
     line_rate,
 )
+from kittools.link.dictionary import Dictionary
 from kittools.link.health import REPLY_TIMEOUT_S, LinkCounts, settled_counts
 from kittools.link.serial_points import (
     DOWNLINK,
@@ -243,16 +242,11 @@ def ping_enable(opcodes: dict[str, int], entry: str, enabled: bool) -> bytes | N
     return frame(command(opcode, string_argument(entry) + ENABLED.pack(int(enabled))))
 
 
-def data_constants(data: dict[str, Any]) -> dict[str, Any]:
-    """A dictionary's constants by qualified name."""
-    return {c["qualifiedName"]: c["value"] for c in data.get("constants", [])}
-
-
 def run(build: Path, repeats: int = REPEATS) -> Outcome:
     """Boot a ground build and sweep every axis on its link, each level `repeats` times."""
     link_info = ground.link_of(build)
-    data = json.loads(link_info.dictionary.read_text())
-    opcodes = {c["name"]: c["opcode"] for c in data["commands"]}
+    names = Dictionary.read(link_info.dictionary)
+    opcodes = names.opcodes
     outcome = Outcome()
     # In real time: the line's writes stay small and even (client.Line)
     with ground.boot(link_info, realtime=True) as qemu:
@@ -304,7 +298,7 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
                     outcome.traffic.append(traffic)
             send_partial = opcodes.get("Kit.fileDownlink.SendPartial")
             if send_partial is not None:
-                bulk = str(data_constants(data)[BULK_FILE_CONSTANT])
+                bulk = str(names.constant(BULK_FILE_CONSTANT))
                 file_bytes = driver.fill_bulk_file(bulk)
                 for level in (*FILE.levels, int(bytes_per_second(baud))):
                     part, per_s = file_request(level, file_bytes)
