@@ -189,14 +189,15 @@ macro(kit_zephyr_link)
     endforeach()
     include("${KIT_ROOT}/app/provenance.cmake")
 
-    # The id of the topology's dictionary (F´ lists it on the topology
-    # module), compiled in for the LINK line: app/dictionary_id.cmake
-    set(KIT_DICTIONARY_ID_HEADER "${CMAKE_BINARY_DIR}/kit/KitDictionaryId.hpp")
-    add_custom_command(OUTPUT "${KIT_DICTIONARY_ID_HEADER}"
+    # What the firmware must know of the topology's dictionary (F´ lists it
+    # on the topology module): its id for the LINK line, and its counts for
+    # the fixed tables' compile-time checks (app/dictionary_header.cmake)
+    set(KIT_DICTIONARY_HEADER "${CMAKE_BINARY_DIR}/kit/KitDictionary.hpp")
+    add_custom_command(OUTPUT "${KIT_DICTIONARY_HEADER}"
         COMMAND "${CMAKE_COMMAND}" "-DDICTIONARY=$<TARGET_PROPERTY:${KIT_TOPOLOGY_MODULE},FPRIME_DICTIONARIES>"
-            "-DOUTPUT=${KIT_DICTIONARY_ID_HEADER}" -P "${KIT_ROOT}/app/dictionary_id.cmake"
-        DEPENDS "$<TARGET_PROPERTY:${KIT_TOPOLOGY_MODULE},FPRIME_DICTIONARIES>" "${KIT_ROOT}/app/dictionary_id.cmake"
-        COMMENT "Naming the F´ dictionary for the LINK line")
-    target_sources(app PRIVATE "${KIT_DICTIONARY_ID_HEADER}")
+            "-DOUTPUT=${KIT_DICTIONARY_HEADER}" -P "${KIT_ROOT}/app/dictionary_header.cmake"
+        DEPENDS "$<TARGET_PROPERTY:${KIT_TOPOLOGY_MODULE},FPRIME_DICTIONARIES>" "${KIT_ROOT}/app/dictionary_header.cmake"
+        COMMENT "Reading the F´ dictionary's id and counts")
+    target_sources(app PRIVATE "${KIT_DICTIONARY_HEADER}" "${KIT_ROOT}/app/src/DictionaryChecks.cpp")
     target_include_directories(app PRIVATE "${CMAKE_BINARY_DIR}/kit")
 endmacro()

@@ -3,16 +3,18 @@
 // dictionary's commands (`scripts/kit sizing`: 32 entries for 16 commands
 // left 16 spare, 12 B each, 192 B). The dispatcher asserts at
 // registration when a command has no entry (CommandDispatcherImpl.cpp:47,
-// at boot), so a new command needs a larger table: `scripts/kit sizing`
-// and the budget step of `scripts/kit test` name the table too small, from
-// the build's dictionary (kittools.sizes.sizing).
+// at boot), so the build fails first when the table is smaller than its
+// dictionary's commands (app/src/DictionaryChecks.cpp). The deployment's
+// share is a Kconfig setting (CONFIG_KIT_DEPLOYMENT_COMMANDS, app/Kconfig:
+// the reference's by default, another deployment's in its
+// deployment.conf); each optional service adds its own commands here.
 // Sequence tracking: commands in flight from the uplink at once.
 #ifndef CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 #define CMDDISPATCHER_COMMANDDISPATCHERIMPLCFG_HPP_
 
 enum {
-    //! The kit's own, and the controller's parameters' set and save
-    KIT_DEPLOYMENT_COMMANDS = 24,
+    //! The deployment's own and the kit's instruments' (app/Kconfig)
+    KIT_DEPLOYMENT_COMMANDS = CONFIG_KIT_DEPLOYMENT_COMMANDS,
 #if defined(CONFIG_KIT_SERVICE_CDH)
     KIT_CDH_COMMANDS = 5,  //!< Svc.Health's 3 and Svc.Version's 2
 #else

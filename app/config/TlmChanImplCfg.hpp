@@ -3,12 +3,14 @@
 // entries. F´'s default (500 buckets) is about half a megabyte. A bucket is
 // taken the first time a channel is written and never given back, and TlmChan
 // asserts when it needs one more than it has: the bucket count must cover
-// every channel of the dictionary. The kit has 36 (the ground link's brought
-// it past the 32 this once held, unnoticed until the sizing advice counted
-// them), three more with passive rate groups, three fewer with the passive
-// dispatcher; `scripts/kit test` fails when a build's dictionary outgrows it
-// (kittools.sizes.sizing). The slots only spread the search: fewer than the
-// components with channels (13) costs time, not correctness.
+// every channel of the dictionary. The deployment's share is a Kconfig
+// setting (CONFIG_KIT_DEPLOYMENT_CHANNELS, app/Kconfig: the reference's 42
+// by default, which the ground link brought past the 32 this once held,
+// unnoticed until the sizing advice counted them); the passive forms of the
+// rate groups and the dispatcher and each optional service change it here.
+// The build fails when its dictionary has more channels than buckets
+// (app/src/DictionaryChecks.cpp). The slots only spread the search: fewer
+// than the components with channels (13) costs time, not correctness.
 #ifndef TLMCHANIMPLCFG_HPP_
 #define TLMCHANIMPLCFG_HPP_
 
@@ -36,15 +38,18 @@ enum {
 enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
+// F´'s PassiveRateGroup has three channels, ActiveRateGroup two: one more
+// per rate group (three in the reference and tests/thermal; the build's
+// check catches another count). PassiveCmdDispatcher has none,
+// CommandDispatcher three.
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE) && defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-    TLMCHAN_HASH_BUCKETS =
-        42 + SERVICE_CHANNELS  //!< three more for the passive rate groups, three fewer for the passive dispatcher
+    TLMCHAN_HASH_BUCKETS = CONFIG_KIT_DEPLOYMENT_CHANNELS + SERVICE_CHANNELS,
 #elif defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 45 + SERVICE_CHANNELS  //!< F´'s PassiveRateGroup has three channels, ActiveRateGroup two
+    TLMCHAN_HASH_BUCKETS = CONFIG_KIT_DEPLOYMENT_CHANNELS + 3 + SERVICE_CHANNELS,
 #elif defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
-    TLMCHAN_HASH_BUCKETS = 39 + SERVICE_CHANNELS  //!< PassiveCmdDispatcher has no channels, CommandDispatcher three
+    TLMCHAN_HASH_BUCKETS = CONFIG_KIT_DEPLOYMENT_CHANNELS - 3 + SERVICE_CHANNELS,
 #else
-    TLMCHAN_HASH_BUCKETS = 42 + SERVICE_CHANNELS  //!< Buckets: at least the number of channels
+    TLMCHAN_HASH_BUCKETS = CONFIG_KIT_DEPLOYMENT_CHANNELS + SERVICE_CHANNELS,
 #endif
 };
 }  // namespace

@@ -4,7 +4,7 @@
 // \brief  The console record of a run
 // ======================================================================
 #include "app/src/Report.hpp"
-#include "KitDictionaryId.hpp"  // generated: app/dictionary_id.cmake
+#include "KitDictionary.hpp"  // generated: app/dictionary_header.cmake
 #include "Top/KitTopology.hpp"
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"

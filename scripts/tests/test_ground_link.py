@@ -5,6 +5,7 @@ adapter against a local Unix socket."""
 
 from __future__ import annotations
 
+import json
 import random
 import socket
 import threading
@@ -248,22 +249,22 @@ def test_halt_lines_start_at_the_first_sign_of_a_halt():
 
 
 def test_the_dictionary_id_is_the_one_the_build_compiles_in(tmp_path: Path):
-    """app/dictionary_id.cmake (compiled into the LINK line) and the ground
-    tools (which compare against it) must name a dictionary alike; the
-    header is rewritten only when the id changes."""
+    """app/dictionary_header.cmake (compiled into the LINK line) and the
+    ground tools (which compare against it) must name a dictionary alike;
+    the header is rewritten only when it changes."""
     import shutil
     import subprocess
 
     dictionary = tmp_path / "KitTopologyDictionary.json"
     dictionary.write_text('{"metadata": {"projectVersion": "abc"}}\n')
-    header = tmp_path / "KitDictionaryId.hpp"
+    header = tmp_path / "KitDictionary.hpp"
     cmake = shutil.which("cmake")
     if cmake is None:
         pytest.skip("cmake is not on PATH")
 
     def generate() -> None:
         subprocess.run([cmake, f"-DDICTIONARY={dictionary}", f"-DOUTPUT={header}", "-P",
-                        str(ground.KIT_ROOT / "app" / "dictionary_id.cmake")], check=True)
+                        str(ground.KIT_ROOT / "app" / "dictionary_header.cmake")], check=True)
 
     generate()
     assert f'#define KIT_DICTIONARY_ID "{ground.dictionary_id(dictionary)}"' in header.read_text()
@@ -301,3 +302,29 @@ def test_a_link_socket_is_free_unless_something_listens(tmp_path: Path):
     assert not ground.socket_free(path)
     server.close()
     assert ground.socket_free(path)  # stale file: QEMU rebinds it
+
+
+def test_the_dictionary_header_counts_its_commands_and_channels(tmp_path: Path):
+    """The compile-time checks of the fixed tables (app/src/DictionaryChecks.cpp)
+    take these counts: one per opcode and per channel, zero where the
+    dictionary lists none."""
+    import shutil
+    import subprocess
+
+    cmake = shutil.which("cmake")
+    if cmake is None:
+        pytest.skip("cmake is not on PATH")
+    dictionary = tmp_path / "TopologyDictionary.json"
+    header = tmp_path / "KitDictionary.hpp"
+
+    def counts(content: dict[str, object]) -> str:
+        dictionary.write_text(json.dumps(content))
+        subprocess.run([cmake, f"-DDICTIONARY={dictionary}", f"-DOUTPUT={header}", "-P",
+                        str(ground.KIT_ROOT / "app" / "dictionary_header.cmake")], check=True)
+        return header.read_text()
+
+    text = counts({"commands": [{"opcode": 1}, {"opcode": 2}, {"opcode": 3}], "telemetryChannels": [{"id": 7}]})
+    assert "#define KIT_DICTIONARY_COMMANDS 3\n" in text
+    assert "#define KIT_DICTIONARY_CHANNELS 1\n" in text
+    text = counts({"metadata": {}})
+    assert "#define KIT_DICTIONARY_COMMANDS 0\n" in text and "#define KIT_DICTIONARY_CHANNELS 0\n" in text

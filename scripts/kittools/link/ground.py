@@ -35,7 +35,7 @@ GDS_TIMEOUT_S = 60.0
 # fprime-gds prints this once its every application is up
 GDS_READY = "F prime is now running"
 # The firmware's line once its link is up (app/src/Report.cpp), with the id
-# of the dictionary it was built with (app/dictionary_id.cmake)
+# of the dictionary it was built with (app/dictionary_header.cmake)
 LINK_READY = "KIT LINK ready"
 LINK_DICTIONARY = re.compile(r"\bdictionary=([0-9a-f]+)")
 
@@ -51,7 +51,7 @@ class Link:
 
 
 def dictionary_id(dictionary: Path) -> str:
-    """A dictionary's id, as app/dictionary_id.cmake compiles it in."""
+    """A dictionary's id, as app/dictionary_header.cmake compiles it in."""
     return hashlib.sha256(dictionary.read_bytes()).hexdigest()[:16]
 
 

@@ -158,14 +158,15 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
     dispatch = (info.member("Svc::CommandDispatcherImpl", "m_entryTable")
                 or info.member("Baremetal::PassiveCmdDispatcher::CmdTables", "m_entryTable"))
     if dispatch is not None:
-        found.append(Advice("command dispatch table", "CMD_DISPATCHER_DISPATCH_TABLE_SIZE "
-                            "(app/config/CommandDispatcherImplCfg.hpp)", dispatch.count, commands,
+        found.append(Advice("command dispatch table", "CONFIG_KIT_DEPLOYMENT_COMMANDS (app/Kconfig; the services' "
+                            "in app/config/CommandDispatcherImplCfg.hpp)", dispatch.count, commands,
                             dispatch.element_bytes, f"{commands} commands in the dictionary"))
     sets = info.member("Svc::TlmChan", "m_tlmEntries")
     buckets = info.member("Svc::TlmChan::TlmSet", "buckets")
     slots = info.member("Svc::TlmChan::TlmSet", "slots")
     if sets is not None and buckets is not None and slots is not None:
-        found.append(Advice("telemetry buckets (TlmChan)", "TLMCHAN_HASH_BUCKETS (app/config/TlmChanImplCfg.hpp)",
+        found.append(Advice("telemetry buckets (TlmChan)", "CONFIG_KIT_DEPLOYMENT_CHANNELS (app/Kconfig; "
+                            "the services' in app/config/TlmChanImplCfg.hpp)",
                             buckets.count, len(channels), buckets.element_bytes * sets.count,
                             f"{len(channels)} channels in the dictionary; a bucket is never freed"))
         found.append(Advice("telemetry hash slots (TlmChan)", "TLMCHAN_NUM_TLM_HASH_SLOTS "
@@ -176,8 +177,8 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
     linear = info.cls("Baremetal::TlmLinearChan::tlmEntry")
     linear_entries = info.enumerator("TlmLinearChan.cpp", "TLMCHAN_HASH_BUCKETS") if linear is not None else None
     if linear is not None and linear_entries is not None:
-        found.append(Advice("telemetry table (TlmLinearChan, heap)", "TLMCHAN_HASH_BUCKETS "
-                            "(app/config/TlmChanImplCfg.hpp)", linear_entries, len(channels), info.size(linear),
+        found.append(Advice("telemetry table (TlmLinearChan, heap)", "CONFIG_KIT_DEPLOYMENT_CHANNELS "
+                            "(app/Kconfig)", linear_entries, len(channels), info.size(linear),
                             f"{len(channels)} channels in the dictionary; an entry is never freed"))
     runner = info.member("Os::Baremetal::TaskRunner", "m_task_table")
     if runner is not None:

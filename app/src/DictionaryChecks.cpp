@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: Apache-2.0
+// ======================================================================
+// The fixed tables that must hold an entry for each of the dictionary's
+// commands or channels, checked against this build's dictionary (its
+// counts: app/dictionary_header.cmake) when the build compiles, not when
+// the firmware boots:
+// - F´'s command dispatchers (CommandDispatcher, and fprime-baremetal's
+//   PassiveCmdDispatcher) assert when a command registers past their
+//   table, at boot;
+// - F´'s telemetry stores (TlmChan, fprime-baremetal's TlmLinearChan)
+//   assert the first time a channel is written past their buckets, at
+//   any time of a run.
+// A deployment that fails here raises its share in its deployment.conf
+// (CONFIG_KIT_DEPLOYMENT_COMMANDS, CONFIG_KIT_DEPLOYMENT_CHANNELS:
+// app/Kconfig); the compiler's note gives both counts. `scripts/kit
+// sizing <build>` gives the spare entries and what they cost.
+// ======================================================================
+#include <config/CommandDispatcherImplCfg.hpp>
+#include <config/TlmChanImplCfg.hpp>
+
+#include "KitDictionary.hpp"  // generated: app/dictionary_header.cmake
+
+static_assert(CMD_DISPATCHER_DISPATCH_TABLE_SIZE >= KIT_DICTIONARY_COMMANDS,
+              "the command dispatch table (CMD_DISPATCHER_DISPATCH_TABLE_SIZE) is smaller than the dictionary's "
+              "commands: raise CONFIG_KIT_DEPLOYMENT_COMMANDS in the deployment's deployment.conf (app/Kconfig)");
+static_assert(TLMCHAN_HASH_BUCKETS >= KIT_DICTIONARY_CHANNELS,
+              "the telemetry buckets (TLMCHAN_HASH_BUCKETS) are fewer than the dictionary's channels: raise "
+              "CONFIG_KIT_DEPLOYMENT_CHANNELS in the deployment's deployment.conf (app/Kconfig)");
