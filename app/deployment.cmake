@@ -13,17 +13,50 @@
 # ======================================================================
 include_guard(GLOBAL)
 
+# The F´ module location a deployment's modules are named from (F´ builds a
+# module only inside a location: its framework, its libraries, its
+# project): the kit's repository for a folder inside it, otherwise the
+# deployment's own F´ project, the nearest folder above it with F´'s
+# settings.ini (the one fprime-util made it in), or else the folder that
+# holds it. The kit adds that location to F´'s (app/kit.cmake), so a
+# team's deployment builds where it is, with the module names it has in
+# its own project (MyDeployment_Top).
+function(kit_deployment_location OUT DIR)
+    cmake_path(ABSOLUTE_PATH DIR NORMALIZE OUTPUT_VARIABLE KIT_FOLDER)
+    cmake_path(IS_PREFIX KIT_ROOT "${KIT_FOLDER}" NORMALIZE KIT_INSIDE)
+    if(KIT_INSIDE)
+        set(${OUT} "${KIT_ROOT}" PARENT_SCOPE)
+        return()
+    endif()
+    cmake_path(GET KIT_FOLDER PARENT_PATH KIT_ABOVE)
+    set(KIT_LOCATION "${KIT_ABOVE}")
+    # Bounded: one step per folder up to the file system's root
+    while(NOT KIT_ABOVE STREQUAL "" AND NOT KIT_ABOVE STREQUAL "/")
+        if(EXISTS "${KIT_ABOVE}/settings.ini")
+            set(KIT_LOCATION "${KIT_ABOVE}")
+            break()
+        endif()
+        cmake_path(GET KIT_ABOVE PARENT_PATH KIT_NEXT)
+        if(KIT_NEXT STREQUAL KIT_ABOVE)
+            break()
+        endif()
+        set(KIT_ABOVE "${KIT_NEXT}")
+    endwhile()
+    set(${OUT} "${KIT_LOCATION}" PARENT_SCOPE)
+endfunction()
+
 function(kit_check_deployment DIR)
     set(KIT_SEAM_DOC "The seam a deployment provides: docs/your-deployment.md.")
     if(NOT IS_DIRECTORY "${DIR}")
         message(FATAL_ERROR "kit: the deployment folder '${DIR}' (KIT_DEPLOYMENT_DIR) does not exist. ${KIT_SEAM_DOC}")
     endif()
-    # F´ builds a module only inside its project or a library location
-    # (app/settings.ini): the kit's repository is the project
-    file(RELATIVE_PATH KIT_PATH "${KIT_ROOT}" "${DIR}")
-    if(KIT_PATH MATCHES "^\\.\\.")
-        message(FATAL_ERROR "kit: the deployment folder '${DIR}' is outside the kit's F´ project (${KIT_ROOT}); "
-            "put it inside it (under tests/, for example). ${KIT_SEAM_DOC}")
+    # Its modules are named from the folder above it: a deployment that is
+    # itself a project's root has no name there
+    kit_deployment_location(KIT_LOCATION "${DIR}")
+    cmake_path(ABSOLUTE_PATH DIR NORMALIZE OUTPUT_VARIABLE KIT_FOLDER)
+    if(KIT_FOLDER STREQUAL KIT_LOCATION OR (NOT KIT_LOCATION STREQUAL KIT_ROOT AND EXISTS "${KIT_FOLDER}/settings.ini"))
+        message(FATAL_ERROR "kit: '${DIR}' is an F´ project's root (it has settings.ini); name the deployment "
+            "folder inside it (the one fprime-util new --deployment made). ${KIT_SEAM_DOC}")
     endif()
     foreach(KIT_PART IN ITEMS config Components Top)
         if(NOT EXISTS "${DIR}/${KIT_PART}/CMakeLists.txt")

@@ -26,6 +26,12 @@ set(FPRIME_BAREMETAL_PATH "${KIT_DEPS}/fprime-baremetal" CACHE PATH "fprime-bare
 set(KIT_DEPLOYMENT_DIR "${KIT_ROOT}/app" CACHE PATH "The F´ deployment the kit builds and measures")
 include("${CMAKE_CURRENT_LIST_DIR}/deployment.cmake")
 kit_check_deployment("${KIT_DEPLOYMENT_DIR}")
+# Where its modules are named from: the kit's repository, or the team's own
+# F´ project for a folder outside it, which F´ then builds modules in too
+kit_deployment_location(KIT_DEPLOYMENT_LOCATION "${KIT_DEPLOYMENT_DIR}")
+if(NOT KIT_DEPLOYMENT_LOCATION STREQUAL KIT_ROOT)
+    set(FPRIME_ZEPHYR_EXTRA_LOCATIONS "${KIT_DEPLOYMENT_LOCATION}")
+endif()
 
 # --- Workspace, board and toolchain (app/board.cmake, shared with tests/floor)
 include("${CMAKE_CURRENT_LIST_DIR}/board.cmake")
@@ -174,7 +180,7 @@ macro(kit_deployment)
     # The kit's code reaches the deployment's topology as "Top/...": its
     # headers, and those F´ generates for it (FppConstantsAc.hpp: under the
     # build folder, at the deployment's path in the F´ project)
-    file(RELATIVE_PATH KIT_DEPLOYMENT_PATH "${KIT_ROOT}" "${KIT_DEPLOYMENT_DIR}")
+    file(RELATIVE_PATH KIT_DEPLOYMENT_PATH "${KIT_DEPLOYMENT_LOCATION}" "${KIT_DEPLOYMENT_DIR}")
     target_include_directories(app PRIVATE "${KIT_DEPLOYMENT_DIR}" "${CMAKE_BINARY_DIR}/${KIT_DEPLOYMENT_PATH}")
     if(NOT KIT_SUB_BUILD)
         kit_zephyr_link()

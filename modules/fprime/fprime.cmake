@@ -4,7 +4,8 @@
 # Call it after the application's project() (F´'s sub-builds re-configure
 # the application, and CMake insists on a literal project() there). Needs
 # FPRIME_FRAMEWORK_PATH and, for the bridge, CMAKE_TOOLCHAIN_FILE set to
-# fprime-zephyr's cmake/toolchain/zephyr.cmake before find_package(Zephyr).
+# fprime-zephyr's cmake/toolchain/zephyr.cmake before find_package(Zephyr);
+# FPRIME_ZEPHYR_EXTRA_LOCATIONS, optional, adds module locations.
 include_guard(GLOBAL)
 
 # fprime-fpp's fpp-* commands are Python wrappers that start the native
@@ -105,6 +106,14 @@ macro(fprime_zephyr_setup)
     set(CMAKE_INSTALL_PREFIX "${CMAKE_BINARY_DIR}/build-artifacts")
     fprime_zephyr_native_fpp()
     include("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake")
+    # Module locations beyond settings.ini's (FPRIME_ZEPHYR_EXTRA_LOCATIONS):
+    # another F´ project whose modules the application builds, named and
+    # included from its own root as in that project. They are not library
+    # locations: F´ would warn that one has no library.cmake and skip it.
+    foreach(FPRIME_ZEPHYR_LOCATION IN LISTS FPRIME_ZEPHYR_EXTRA_LOCATIONS)
+        list(APPEND FPRIME_BUILD_LOCATIONS "${FPRIME_ZEPHYR_LOCATION}")
+        include_directories("${FPRIME_ZEPHYR_LOCATION}")
+    endforeach()
     fprime_setup_included_code()
     # After every module of the application has registered its configuration
     cmake_language(DEFER DIRECTORY "${CMAKE_SOURCE_DIR}" CALL fprime_zephyr_keep_config_times)
