@@ -15,23 +15,23 @@ include_guard(GLOBAL)
 
 # The F´ module location a deployment's modules are named from (F´ builds a
 # module only inside a location: its framework, its libraries, its
-# project): the kit's repository for a folder inside it, otherwise the
-# deployment's own F´ project, the nearest folder above it with F´'s
-# settings.ini (the one fprime-util made it in), or else the folder that
-# holds it. The kit adds that location to F´'s (app/kit.cmake), so a
-# team's deployment builds where it is, with the module names it has in
-# its own project (MyDeployment_Top).
+# project): the deployment's own F´ project, the nearest folder above it
+# with F´'s settings.ini (the one fprime-util made it in); else the kit's
+# repository for a folder inside it, or the folder that holds it. The kit
+# adds that location to F´'s (app/kit.cmake), so a team's deployment builds
+# where it is, with the module names and include paths it has in its own
+# project ("MyDeployment/Top/...").
 function(kit_deployment_location OUT DIR)
     cmake_path(ABSOLUTE_PATH DIR NORMALIZE OUTPUT_VARIABLE KIT_FOLDER)
     cmake_path(IS_PREFIX KIT_ROOT "${KIT_FOLDER}" NORMALIZE KIT_INSIDE)
-    if(KIT_INSIDE)
-        set(${OUT} "${KIT_ROOT}" PARENT_SCOPE)
-        return()
-    endif()
     cmake_path(GET KIT_FOLDER PARENT_PATH KIT_ABOVE)
-    set(KIT_LOCATION "${KIT_ABOVE}")
-    # Bounded: one step per folder up to the file system's root
-    while(NOT KIT_ABOVE STREQUAL "" AND NOT KIT_ABOVE STREQUAL "/")
+    if(KIT_INSIDE)
+        set(KIT_LOCATION "${KIT_ROOT}")
+    else()
+        set(KIT_LOCATION "${KIT_ABOVE}")
+    endif()
+    # Bounded: one step per folder up to the kit's root or the file system's
+    while(NOT KIT_ABOVE STREQUAL KIT_ROOT)
         if(EXISTS "${KIT_ABOVE}/settings.ini")
             set(KIT_LOCATION "${KIT_ABOVE}")
             break()
@@ -54,7 +54,7 @@ function(kit_check_deployment DIR)
     # itself a project's root has no name there
     kit_deployment_location(KIT_LOCATION "${DIR}")
     cmake_path(ABSOLUTE_PATH DIR NORMALIZE OUTPUT_VARIABLE KIT_FOLDER)
-    if(KIT_FOLDER STREQUAL KIT_LOCATION OR (NOT KIT_LOCATION STREQUAL KIT_ROOT AND EXISTS "${KIT_FOLDER}/settings.ini"))
+    if(KIT_FOLDER STREQUAL KIT_LOCATION OR (NOT KIT_FOLDER STREQUAL "${KIT_ROOT}/app" AND EXISTS "${KIT_FOLDER}/settings.ini"))
         message(FATAL_ERROR "kit: '${DIR}' is an F´ project's root (it has settings.ini); name the deployment "
             "folder inside it (the one fprime-util new --deployment made). ${KIT_SEAM_DOC}")
     endif()

@@ -63,13 +63,42 @@ make_venv() {
   fi
 }
 
-# The clone itself is the west workspace (topdir): .west/ here, upstreams in
-# deps/ (paths in west.yml), both ignored by git.
+# The west workspace (topdir): the clone itself (.west/ here, upstreams in
+# deps/, paths in west.yml, both ignored by git), or the workspace of another
+# repository whose west.yml imports the kit (`path: .` and `import:
+# path-prefix: <the kit's folder>`, docs/your-deployment.md): its west
+# update puts the kit's upstreams in the kit's deps/ all the same.
+IMPORTED_BY=""
 init_workspace() {
-  if [ ! -f "$KIT_ROOT/.west/config" ]; then
-    mkdir -p "$KIT_ROOT/.west"
-    printf '[manifest]\npath = .\nfile = west.yml\n\n[zephyr]\nbase = deps/zephyr\n' >"$KIT_ROOT/.west/config"
+  if [ -f "$KIT_ROOT/.west/config" ]; then
+    return
   fi
+  local dir
+  dir=$(dirname "$KIT_ROOT")
+  while [ "$dir" != "/" ] && [ -n "$dir" ]; do
+    if [ -f "$dir/.west/config" ]; then
+      IMPORTED_BY=$dir
+      return
+    fi
+    dir=$(dirname "$dir")
+  done
+  mkdir -p "$KIT_ROOT/.west"
+  printf '[manifest]\npath = .\nfile = west.yml\n\n[zephyr]\nbase = deps/zephyr\n' >"$KIT_ROOT/.west/config"
+}
+
+# In an importing workspace, west update is that workspace's: the kit only
+# checks that it put the upstreams where the kit reads them
+check_imported_upstreams() {
+  local project
+  for project in zephyr fprime fprime-baremetal fprime-zephyr; do
+    [ -d "$WS/$project/.git" ] || [ -f "$WS/$project/.git" ] || die "the west workspace $IMPORTED_BY imports the kit,
+  but $WS/$project is missing. Run west update there; its west.yml must import the kit with
+    path: .
+    import:
+      path-prefix: $(realpath --relative-to="$IMPORTED_BY" "$KIT_ROOT")
+  so that the kit's upstreams land in its deps/ (docs/your-deployment.md)."
+  done
+  say "west workspace: $IMPORTED_BY (its manifest imports the kit; its west update fetched the upstreams)"
 }
 
 west_update() {
@@ -140,7 +169,11 @@ check_toolchain() {
 install_debian_packages
 make_venv
 init_workspace
-west_update
+if [ -n "$IMPORTED_BY" ]; then
+  check_imported_upstreams
+else
+  west_update
+fi
 apply_patches
 provide_googletest
 pip_install_stamped zephyr "$WS/zephyr/scripts/requirements-base.txt" \

@@ -39,7 +39,7 @@ enum {
     TLMCHAN_NUM_TLM_HASH_SLOTS = 8,  //!< Slots in the hash table
     TLMCHAN_HASH_MOD_VALUE = 8,      //!< Modulo of the hashing function
 // F´'s PassiveRateGroup has three channels, ActiveRateGroup two: one more
-// per rate group (three in the reference and tests/thermal; the build's
+// per rate group (three in the reference and tests/team/Thermal; the build's
 // check catches another count). PassiveCmdDispatcher has none,
 // CommandDispatcher three.
 #if defined(CONFIG_KIT_RATE_GROUPS_PASSIVE) && defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)

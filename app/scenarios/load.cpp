@@ -76,7 +76,7 @@ U32 topUs() {
 // port's calls counted over its first point). At the top the load's work
 // stays within half of the calls' time: past it the load is more than the
 // CPU, every model overflows the load's queue, and the axis would measure
-// that queue, not the scheduling (measured: tests/thermal, a 40 ms slice each
+// that queue, not the scheduling (measured: tests/team/Thermal, a 40 ms slice each
 // 20 ms, dropped 289 messages in its rtos build). So a burst has as many
 // messages as fit, up to BURST_MESSAGES_MAX, and a load that does not fit
 // with one is paced: one slice or burst each `every` calls. The reference

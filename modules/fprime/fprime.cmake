@@ -110,8 +110,25 @@ macro(fprime_zephyr_setup)
     # another F´ project whose modules the application builds, named and
     # included from its own root as in that project. They are not library
     # locations: F´ would warn that one has no library.cmake and skip it.
+    # F´ names a file from the first location that holds it, and fails when a
+    # later one gives it a name that is not a tail of that one: a location
+    # nested in another (a project inside the application's repository) goes
+    # before the one that holds it, any other after them all.
     foreach(FPRIME_ZEPHYR_LOCATION IN LISTS FPRIME_ZEPHYR_EXTRA_LOCATIONS)
-        list(APPEND FPRIME_BUILD_LOCATIONS "${FPRIME_ZEPHYR_LOCATION}")
+        set(FPRIME_ZEPHYR_AT -1)
+        set(FPRIME_ZEPHYR_INDEX 0)
+        foreach(FPRIME_ZEPHYR_KNOWN IN LISTS FPRIME_BUILD_LOCATIONS)
+            cmake_path(IS_PREFIX FPRIME_ZEPHYR_KNOWN "${FPRIME_ZEPHYR_LOCATION}" NORMALIZE FPRIME_ZEPHYR_HOLDS)
+            if(FPRIME_ZEPHYR_HOLDS AND FPRIME_ZEPHYR_AT EQUAL -1)
+                set(FPRIME_ZEPHYR_AT ${FPRIME_ZEPHYR_INDEX})
+            endif()
+            math(EXPR FPRIME_ZEPHYR_INDEX "${FPRIME_ZEPHYR_INDEX} + 1")
+        endforeach()
+        if(FPRIME_ZEPHYR_AT EQUAL -1)
+            list(APPEND FPRIME_BUILD_LOCATIONS "${FPRIME_ZEPHYR_LOCATION}")
+        else()
+            list(INSERT FPRIME_BUILD_LOCATIONS ${FPRIME_ZEPHYR_AT} "${FPRIME_ZEPHYR_LOCATION}")
+        endif()
         include_directories("${FPRIME_ZEPHYR_LOCATION}")
     endforeach()
     fprime_setup_included_code()

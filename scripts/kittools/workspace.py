@@ -58,9 +58,17 @@ def check_board(board: str, boards: Path | None = None) -> str:
     return folder.name
 
 
+def west_topdir(root: Path | None = None) -> Path | None:
+    """The west workspace the kit is in: the clone itself (scripts/setup.sh
+    makes its .west/), or the workspace of a manifest that imports the kit;
+    None outside any."""
+    root = KIT_ROOT if root is None else root
+    return next((folder for folder in (root, *root.parents) if (folder / ".west" / "config").is_file()), None)
+
+
 def check_provisioned() -> None:
     missing = [name for name in UPSTREAMS if not (DEPS / name).is_dir()]
-    if missing or not (KIT_ROOT / ".west" / "config").is_file():
+    if missing or west_topdir() is None:
         what = ", ".join(missing) if missing else ".west/config"
         raise KitError(f"the workspace is not provisioned (missing: {what}). Run scripts/setup.sh first.")
 

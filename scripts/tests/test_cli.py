@@ -176,10 +176,11 @@ def test_a_deployments_own_run_is_its_whole_run_on_each_board_and_nothing_else(m
     """kit test --deployment: that deployment's scenarios, ground link and
     report, per board; not the reference's suite, host tests or porting."""
     out = ["--output", str(tmp_path)]
-    thermal = str(workspace.KIT_ROOT / "tests" / "thermal")
+    thermal = str(workspace.KIT_ROOT / "tests" / "team" / "Thermal")
     qemu, host = _lanes(monkeypatch, [*out, "--deployment", thermal])
     assert host == [] and len(qemu) == 1
-    assert qemu[0].startswith("tests/thermal through the seam, every model on qemu_cortex_m3: nominal, load, faults")
+    assert qemu[0].startswith("tests/team/Thermal through the seam, every model on qemu_cortex_m3: nominal, load, "
+                              "faults")
     qemu, _ = _lanes(monkeypatch, [*out, "--deployment", thermal, "--board", "qemu_cortex_m3",
                                    "--board", "mps2/an385"])
     assert [name.split(": ")[0].rsplit(" ", 1)[-1] for name in qemu] == ["qemu_cortex_m3", "mps2/an385"]
@@ -187,7 +188,7 @@ def test_a_deployments_own_run_is_its_whole_run_on_each_board_and_nothing_else(m
 
 def test_a_full_run_ends_with_the_second_deployments_whole_run(monkeypatch, tmp_path):
     qemu, _ = _lanes(monkeypatch, ["--output", str(tmp_path)])
-    assert qemu[-1].startswith("second deployment: tests/thermal through the seam, every model on qemu_cortex_m3: "
+    assert qemu[-1].startswith("second deployment: tests/team/Thermal through the seam, every model on qemu_cortex_m3: "
                                "nominal, load, faults, ground link, report")
 
 
@@ -196,8 +197,8 @@ def test_a_full_run_ends_with_the_second_deployments_whole_run(monkeypatch, tmp_
     (["test", "--subset", "half"], "--subset half: expected K/N"),
     (["test", "--subset", "1/2", "--update-baseline"], "--update-baseline needs the whole run on one machine"),
     (["test", "--quick", "--board", "mps2/an385"], "--quick is the reference board's short run"),
-    (["test", "--deployment", "tests/thermal", "--quick"], "--deployment is a deployment's own run"),
-    (["test", "--deployment", "tests/thermal", "--update-baseline"], "--deployment is a deployment's own run"),
+    (["test", "--deployment", "tests/team/Thermal", "--quick"], "--deployment is a deployment's own run"),
+    (["test", "--deployment", "tests/team/Thermal", "--update-baseline"], "--deployment is a deployment's own run"),
     (["report", "--merge", "a", "--baseline", "b"], "--merge takes the shards' output folders only"),
     (["report"], "kit report needs results files, or --merge DIR"),
 ])

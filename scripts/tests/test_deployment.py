@@ -82,9 +82,19 @@ def test_a_folder_that_is_not_a_deployment_gets_one_clear_error(inside_kit: Path
     assert ".cmake:" not in message and "\n" not in message  # CMake's noise left out
 
 
-def test_a_deployment_outside_the_kits_fprime_project_is_refused(tmp_path: Path):
-    with pytest.raises(KitError, match="outside the kit's F´ project"):
-        deployment.resolve(_seam(tmp_path / "elsewhere"))
+def test_a_deployment_in_a_teams_own_fprime_project_passes(tmp_path: Path):
+    """A folder outside the kit's repository builds from its own F´ project
+    (the nearest settings.ini above it: app/deployment.cmake)."""
+    (tmp_path / "settings.ini").write_text("[fprime]\nproject_root: .\n")
+    mine = deployment.resolve(_seam(tmp_path / "MyDeployment"))
+    assert not mine.is_reference and mine.name == str(tmp_path / "MyDeployment")
+    assert mine.output_suffix() == "-MyDeployment"
+
+
+def test_an_fprime_projects_root_is_not_a_deployment(tmp_path: Path):
+    (tmp_path / "settings.ini").write_text("[fprime]\nproject_root: .\n")
+    with pytest.raises(KitError, match="is an F´ project's root"):
+        deployment.resolve(_seam(tmp_path))
 
 
 def test_a_builds_conditions_name_its_deployment(tmp_path: Path):
@@ -115,11 +125,11 @@ def test_a_deployments_ground_build_has_a_folder_of_its_own(inside_kit: Path):
 
 
 def test_the_second_deployment_passes_the_seam_and_shares_nothing_with_the_reference():
-    """tests/thermal: its own components, its own rates (50, 10 and 1 Hz,
+    """tests/team/Thermal: its own components, its own rates (50, 10 and 1 Hz,
     declared once in its RATE_GROUPS), none of the reference deployment's
     components, and the kit's subtopologies imported."""
-    thermal = deployment.resolve(KIT_ROOT / "tests" / "thermal")
-    assert thermal.name == "tests/thermal" and not thermal.is_reference
+    thermal = deployment.resolve(KIT_ROOT / "tests" / "team" / "Thermal")
+    assert thermal.name == "tests/team/Thermal" and not thermal.is_reference
     sources = "\n".join(path.read_text() for path in thermal.path.rglob("*") if path.is_file())
     for reference_own in ("Controller", "Monitor", "Housekeeping", "ParamDefaults", "rg1kHz", "rg100Hz"):
         assert reference_own not in sources, reference_own
@@ -129,7 +139,7 @@ def test_the_second_deployment_passes_the_seam_and_shares_nothing_with_the_refer
 
 
 def test_ci_makes_the_second_deployments_whole_run_through_the_seam(monkeypatch, tmp_path: Path):
-    """kit test's last step: tests/thermal's run on the reference board, its
+    """kit test's last step: tests/team/Thermal's run on the reference board, its
     serial-load sweep in the full run only."""
     import argparse
 
@@ -145,8 +155,8 @@ def test_ci_makes_the_second_deployments_whole_run_through_the_seam(monkeypatch,
         run.args = argparse.Namespace(full=full)
         assert run.second_deployment() == Tally(41, 0)
         (chosen, board, out_dir), options = calls[-1]
-        assert chosen.path == KIT_ROOT / "tests" / "thermal"
-        assert board == "qemu_cortex_m3" and out_dir == tmp_path / "deployment-thermal"
+        assert chosen.path == KIT_ROOT / "tests" / "team" / "Thermal"
+        assert board == "qemu_cortex_m3" and out_dir == tmp_path / "deployment-Thermal"
         assert options == {"serial_plays": serial_plays}
 
 
@@ -167,7 +177,7 @@ def test_a_deployments_run_plays_its_scenarios_in_every_model_then_its_ground_li
         raise _Stop
 
     monkeypatch.setattr(ground_checks, "run_deployment_link", link)
-    chosen = deployment.resolve(KIT_ROOT / "tests" / "thermal")
+    chosen = deployment.resolve(KIT_ROOT / "tests" / "team" / "Thermal")
     with pytest.raises(_Stop):
         deployment_run.run_deployment(chosen, "qemu_cortex_m3", tmp_path, floors_from=tmp_path / "none",
                                       serial_plays=1)
@@ -176,7 +186,7 @@ def test_a_deployments_run_plays_its_scenarios_in_every_model_then_its_ground_li
     assert options["models"] == tuple(variants.names()) and options["scenarios"] == ("nominal", "load", "faults")
     # No suite run to take the board's kernel floor from: the deployment's run measures it
     assert options["with_floor"] is True
-    assert options["cmake_args"] == (f"-DKIT_DEPLOYMENT_DIR={KIT_ROOT / 'tests' / 'thermal'}",)
+    assert options["cmake_args"] == (f"-DKIT_DEPLOYMENT_DIR={KIT_ROOT / 'tests' / 'team' / 'Thermal'}",)
     assert calls[1][0] == (tmp_path, tmp_path / "twister", 1)
 
 

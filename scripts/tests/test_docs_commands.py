@@ -16,8 +16,10 @@ from kittools.commands import test as test_command
 from kittools.workspace import KIT_ROOT
 
 PAGE = KIT_ROOT / "docs" / "your-deployment.md"
-#: What the page's placeholders stand for: the deployment CI measures, and one of its builds
-PLACEHOLDERS = {"<folder>": "tests/thermal", "<a build folder of it>": "build/compare-thermal"}
+#: What the page's placeholders stand for: the deployment CI measures (a deployment in
+#: a team's own F´ project, tests/team), and one of its builds
+PLACEHOLDERS = {"<folder>": "tests/team/Thermal", "<project>/MyDeployment": "tests/team/Thermal",
+                "<a build folder of it>": "build/compare-Thermal"}
 FENCE = re.compile(r"^```[a-z]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
 
 
@@ -65,7 +67,7 @@ def test_each_west_build_sets_only_options_the_kit_has(words: list[str]):
 
 
 def test_the_whole_run_the_page_promises_is_the_one_ci_makes():
-    """kit test's second deployment is `kit test --deployment tests/thermal`."""
+    """kit test's second deployment is `kit test --deployment tests/team/Thermal`."""
     runs = [words for words in KIT_COMMANDS if words[1] == "test" and "--deployment" in words]
     assert runs, "the page gives no kit test --deployment"
     assert KIT_ROOT / PLACEHOLDERS["<folder>"] == test_command.SECOND_DEPLOYMENT

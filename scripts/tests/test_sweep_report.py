@@ -317,7 +317,7 @@ def test_health_stops_pinging_the_event_service_with_its_own_command() -> None:
 
 
 def test_the_sweep_table_says_how_the_scenario_shaped_its_axis():
-    """A load paced for a slow group (tests/thermal's 50 Hz slice) says so in its table's title."""
+    """A load paced for a slow group (tests/team/Thermal's 50 Hz slice) says so in its table's title."""
     lines = sweep_lines("baremetal", None) + ["KIT AXIS name=slice period_us=20000 step_us=2000 top_us=40000 "
                                               "burst=0 every=4"]
     records = [console.parse_line(line) for line in lines]

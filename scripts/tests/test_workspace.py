@@ -98,3 +98,15 @@ def test_check_committed_names_the_changed_files(tmp_path: Path) -> None:
     (tmp_path / "kept.txt").write_text("two\n")
     with pytest.raises(KitError, match=r"uncommitted changes \(kept.txt\): why"):
         workspace.check_committed("why", tmp_path)
+
+
+def test_the_west_workspace_is_the_clone_or_one_that_imports_the_kit(tmp_path):
+    kit = tmp_path / "topdir" / "kit"
+    kit.mkdir(parents=True)
+    assert workspace.west_topdir(kit) is None
+    (tmp_path / "topdir" / ".west").mkdir()
+    (tmp_path / "topdir" / ".west" / "config").write_text("[manifest]\npath = team\n")
+    assert workspace.west_topdir(kit) == tmp_path / "topdir"  # a manifest that imports the kit
+    (kit / ".west").mkdir()
+    (kit / ".west" / "config").write_text("[manifest]\npath = .\n")
+    assert workspace.west_topdir(kit) == kit  # the clone's own, which scripts/setup.sh makes

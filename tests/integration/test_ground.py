@@ -91,7 +91,7 @@ def test_telemetry_every_tenth_of_a_second(fprime_test_api: Any) -> None:
     whatever its rate (Timing::tlmDecimation): consecutive samples are
     100 ms apart in the deployment's time, and as many cycles apart each
     time (100 for the reference deployment's 1 kHz group, 5 for
-    tests/thermal's 50 Hz one)."""
+    tests/team/Thermal's 50 Hz one)."""
     samples = fprime_test_api.await_telemetry_count(6, "Kit.timing.FastCycles", timeout=TIMEOUT_S)
     times = [sample.get_time().get_float() for sample in samples]
     values = [sample.get_val() for sample in samples]

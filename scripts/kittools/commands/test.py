@@ -35,7 +35,7 @@ from kittools.workspace import KIT_ROOT, KitError, check_committed, check_provis
 
 #: The deployment unlike the reference one that CI measures through the seam
 #: (docs/your-deployment.md)
-SECOND_DEPLOYMENT = KIT_ROOT / "tests" / "thermal"
+SECOND_DEPLOYMENT = KIT_ROOT / "tests" / "team" / "Thermal"
 
 #: kit test --quick: the scenarios every model plays on the reference board
 QUICK_SCENARIOS = ("nominal", "faults", "load")
@@ -144,7 +144,7 @@ class FullRun:
                                              serial_plays=serial_plays(self.args))
 
     def second_deployment(self) -> Tally:
-        """The second deployment (tests/thermal) through the seam, every
+        """The second deployment (tests/team/Thermal) through the seam, every
         model on the reference board: its whole run and report
         (kittools.suite.deployment_run)."""
         chosen = deployment.resolve(SECOND_DEPLOYMENT)

@@ -6,7 +6,7 @@ command dispatcher.
 The dispatcher is found, not named: every deployment has one (F´'s
 `Svc.CommandDispatcher`, or fprime-baremetal's passive form), under the
 instance name and module its topology gives it (`Kit.cmdDisp` in the
-reference deployment, `Thermal.cmdDisp` in tests/thermal). It is the one
+reference deployment, `Thermal.cmdDisp` in tests/team/Thermal). It is the one
 instance with F´'s dispatcher's own command, CMD_NO_OP; its events and
 channels are named from it.
 """

@@ -23,7 +23,7 @@ from kittools.workspace import KitError
 
 #: How the compilation unit that defines every instance of the topology ends
 #: (F´'s autocoder: <Topology>TopologyAc.cpp, KitTopologyAc.cpp in the
-#: reference deployment, ThermalTopologyAc.cpp in tests/thermal). Its
+#: reference deployment, ThermalTopologyAc.cpp in tests/team/Thermal). Its
 #: instances are in their modules' namespaces: the deployment's, and Kit
 #: for the kit's subtopologies'
 TOPOLOGY_UNIT = "TopologyAc.cpp"

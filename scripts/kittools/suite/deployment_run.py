@@ -2,7 +2,7 @@
 """A deployment's whole run through the seam (docs/your-deployment.md): every
 model on a board, its scenarios under twister, its ground link's checks, its
 results and report. `kit test` runs it on the second deployment
-(tests/thermal); `kit test --deployment DIR` on a team's own."""
+(tests/team/Thermal); `kit test --deployment DIR` on a team's own."""
 
 from __future__ import annotations
 

@@ -9,7 +9,7 @@
 #define THERMAL_KITTOPOLOGY_HPP
 
 #include "app/src/ActiveForms.hpp"
-#include "tests/thermal/Top/ThermalTopologyAc.hpp"
+#include "Thermal/Top/ThermalTopologyAc.hpp"
 
 namespace Kit {
 

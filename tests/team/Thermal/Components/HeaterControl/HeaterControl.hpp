@@ -6,8 +6,8 @@
 #ifndef THERMAL_HEATERCONTROL_HPP
 #define THERMAL_HEATERCONTROL_HPP
 
-#include "tests/thermal/Components/HeaterControl/HeaterControlComponentAc.hpp"
-#include "tests/thermal/Components/Ports/FppConstantsAc.hpp"
+#include "Thermal/Components/HeaterControl/HeaterControlComponentAc.hpp"
+#include "Thermal/Components/Ports/FppConstantsAc.hpp"
 
 namespace Thermal {
 

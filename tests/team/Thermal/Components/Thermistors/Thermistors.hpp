@@ -6,8 +6,8 @@
 #ifndef THERMAL_THERMISTORS_HPP
 #define THERMAL_THERMISTORS_HPP
 
-#include "tests/thermal/Components/Ports/FppConstantsAc.hpp"
-#include "tests/thermal/Components/Thermistors/ThermistorsComponentAc.hpp"
+#include "Thermal/Components/Ports/FppConstantsAc.hpp"
+#include "Thermal/Components/Thermistors/ThermistorsComponentAc.hpp"
 
 namespace Thermal {
 

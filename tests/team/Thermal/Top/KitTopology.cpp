@@ -4,7 +4,7 @@
 // \brief  The thermal deployment's tables and setup, for the kit
 //         (app/src/Deployment.hpp)
 // ======================================================================
-#include "tests/thermal/Top/KitTopology.hpp"
+#include "Thermal/Top/KitTopology.hpp"
 #include <Fw/Types/Assert.hpp>
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"

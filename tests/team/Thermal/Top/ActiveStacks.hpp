@@ -7,7 +7,7 @@
 #ifndef THERMAL_ACTIVESTACKS_HPP
 #define THERMAL_ACTIVESTACKS_HPP
 
-#include "tests/thermal/Top/KitTopology.hpp"
+#include "Thermal/Top/KitTopology.hpp"
 
 namespace Kit {
 

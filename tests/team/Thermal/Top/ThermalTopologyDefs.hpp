@@ -7,7 +7,7 @@
 #define THERMAL_THERMALTOPOLOGYDEFS_HPP
 
 #include "app/src/TopologyState.hpp"
-#include "tests/thermal/Top/FppConstantsAc.hpp"
+#include "Thermal/Top/FppConstantsAc.hpp"
 
 namespace Thermal {
 //! The kit's: its main hands the setup the kit's counting allocator

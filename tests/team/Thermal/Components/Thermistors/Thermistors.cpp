@@ -3,7 +3,7 @@
 // \title  Thermistors.cpp
 // \brief  50 Hz thermistor sampling of the heated zones
 // ======================================================================
-#include "tests/thermal/Components/Thermistors/Thermistors.hpp"
+#include "Thermal/Components/Thermistors/Thermistors.hpp"
 #include <Fw/Types/Assert.hpp>
 
 namespace Thermal {

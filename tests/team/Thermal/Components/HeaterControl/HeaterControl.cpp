@@ -3,7 +3,7 @@
 // \title  HeaterControl.cpp
 // \brief  Bang-bang heater control with hysteresis, and its duty report
 // ======================================================================
-#include "tests/thermal/Components/HeaterControl/HeaterControl.hpp"
+#include "Thermal/Components/HeaterControl/HeaterControl.hpp"
 #include <Fw/Types/Assert.hpp>
 
 namespace Thermal {
