@@ -188,8 +188,9 @@ def test_a_deployments_own_run_is_its_whole_run_on_each_board_and_nothing_else(m
 
 def test_a_full_run_ends_with_the_second_deployments_whole_run(monkeypatch, tmp_path):
     qemu, _ = _lanes(monkeypatch, ["--output", str(tmp_path)])
-    assert qemu[-1].startswith("second deployment: tests/team/Thermal through the seam, every model on qemu_cortex_m3: "
-                               "nominal, load, faults, ground link, report")
+    assert qemu[-1].startswith("second deployment: tests/team/Thermal through the seam, from a repository whose "
+                               "west.yml imports the kit, every model on qemu_cortex_m3: nominal, load, faults, "
+                               "ground link, report, west kit")
 
 
 @pytest.mark.parametrize("arguments, message", [

@@ -138,26 +138,63 @@ def test_the_second_deployment_passes_the_seam_and_shares_nothing_with_the_refer
         assert rate in table
 
 
-def test_ci_makes_the_second_deployments_whole_run_through_the_seam(monkeypatch, tmp_path: Path):
-    """kit test's last step: tests/team/Thermal's run on the reference board, its
-    serial-load sweep in the full run only."""
+def test_ci_makes_the_second_deployments_whole_run_from_a_repository_that_imports_the_kit(monkeypatch,
+                                                                                          tmp_path: Path):
+    """kit test's last step: tests/team/Thermal's run on the reference board,
+    from a copy of its F´ project (tests/team) in a workspace that imports
+    the kit, then `west kit sizing` there; its serial-load sweep in the full
+    run only."""
     import argparse
+    import contextlib
 
     from kittools.commands import test as kit_test
-    from kittools.suite import deployment_run
+    from kittools.suite import deployment_run, imported
     from kittools.suite.counts import Tally
 
+    team = tmp_path / "team"
+    shutil.copytree(KIT_ROOT / "tests" / "team", team)
     calls = []
-    monkeypatch.setattr(deployment_run, "run_deployment", lambda *a, **k: calls.append((a, k)) or Tally(41, 0))
+
+    @contextlib.contextmanager
+    def workspace(project: Path, log_dir: Path):
+        calls.append(("workspace", project))
+        yield team
+
+    def run(chosen, board, out_dir, serial_plays):
+        calls.append(("run", chosen.path, board, out_dir, serial_plays))
+        elf = out_dir / "twister" / "qemu_cortex_m3" / "app" / "kit.rtos" / "zephyr" / "zephyr.elf"
+        elf.parent.mkdir(parents=True, exist_ok=True)
+        elf.touch()
+        return Tally(41, 0)
+
+    monkeypatch.setattr(imported, "importing_workspace", workspace)
+    monkeypatch.setattr(deployment_run, "run_deployment", run)
+    monkeypatch.setattr(imported, "west_kit", lambda where, args, log, expect: calls.append(("west", where, args))
+                        or Tally(1, 0))
     for full, serial_plays in ((False, 0), (True, 1)):
-        run = object.__new__(kit_test.FullRun)
-        run.log_dir = tmp_path
-        run.args = argparse.Namespace(full=full)
-        assert run.second_deployment() == Tally(41, 0)
-        (chosen, board, out_dir), options = calls[-1]
-        assert chosen.path == KIT_ROOT / "tests" / "team" / "Thermal"
-        assert board == "qemu_cortex_m3" and out_dir == tmp_path / "deployment-Thermal"
-        assert options == {"serial_plays": serial_plays}
+        calls.clear()
+        run_ = object.__new__(kit_test.FullRun)
+        run_.log_dir = tmp_path / "logs"
+        run_.args = argparse.Namespace(full=full)
+        assert run_.second_deployment() == Tally(42, 0)
+        out_dir = tmp_path / "logs" / "deployment-Thermal"
+        assert calls[0] == ("workspace", KIT_ROOT / "tests" / "team")
+        assert calls[1] == ("run", team / "Thermal", "qemu_cortex_m3", out_dir, serial_plays)
+        assert calls[2] == ("west", team, ["sizing", str(out_dir / "twister" / "qemu_cortex_m3" / "app" / "kit.rtos")])
+
+
+def test_the_importing_manifest_puts_the_kits_upstreams_in_its_deps():
+    """west.yml of a repository that imports the kit: the kit at kit/ and its
+    upstreams, with the same prefix, in kit/deps/ (where the kit reads them)."""
+    import yaml
+
+    from kittools.suite import imported
+
+    text = imported.manifest("https://example.org/kit.git", "0123abcd")
+    data = yaml.safe_load(text)["manifest"]
+    (kit,) = data["projects"]
+    assert data["self"]["path"] == "team"
+    assert kit["path"] == "." and kit["import"] == {"path-prefix": "kit"} and kit["revision"] == "0123abcd"
 
 
 class _Stop(Exception):

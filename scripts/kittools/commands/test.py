@@ -14,6 +14,7 @@ from pathlib import Path
 from kittools import deployment, variants
 from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.link import serial_points
+from kittools.log import LOG
 from kittools.suite import (
     budget,
     deployment_run,
@@ -21,6 +22,7 @@ from kittools.suite import (
     device_runs,
     ground_checks,
     host,
+    imported,
     platforms,
     porting,
     results,
@@ -33,7 +35,8 @@ from kittools.suite.counts import Tally
 from kittools.suite.plan import Plan, settle
 from kittools.workspace import KIT_ROOT, KitError, check_committed, check_provisioned
 
-#: The deployment unlike the reference one that CI measures through the seam
+#: The deployment unlike the reference one that CI measures through the seam,
+#: in an F´ project of its own as a team's repository holds one
 #: (docs/your-deployment.md)
 SECOND_DEPLOYMENT = KIT_ROOT / "tests" / "team" / "Thermal"
 
@@ -144,15 +147,28 @@ class FullRun:
                                              serial_plays=serial_plays(self.args))
 
     def second_deployment(self) -> Tally:
-        """The second deployment (tests/team/Thermal) through the seam, every
-        model on the reference board: its whole run and report
-        (kittools.suite.deployment_run)."""
-        chosen = deployment.resolve(SECOND_DEPLOYMENT)
-        # Its serial-load sweep in the full run only: about 50 s a model,
-        # and the link it measures is the kit's, which CI's run sweeps on
-        # the reference deployment's builds
-        return deployment_run.run_deployment(chosen, REFERENCE_BOARD, deployment_log_dir(self.log_dir, chosen),
-                                             serial_plays=ground_checks.SERIAL_PLAYS_CI if self.args.full else 0)
+        """The second deployment (tests/team/Thermal) as a team runs it: its
+        F´ project (tests/team) copied into a repository whose west.yml
+        imports the kit, outside the clone (kittools.suite.imported); there,
+        every model on the reference board, its whole run and report
+        (kittools.suite.deployment_run), and `west kit sizing` of one of
+        its builds from that repository."""
+        with imported.importing_workspace(SECOND_DEPLOYMENT.parent, self.log_dir) as team:
+            chosen = deployment.resolve(team / SECOND_DEPLOYMENT.name)
+            out_dir = deployment_log_dir(self.log_dir, chosen)
+            # Its serial-load sweep in the full run only: about 50 s a model,
+            # and the link it measures is the kit's, which CI's run sweeps on
+            # the reference deployment's builds
+            tally = deployment_run.run_deployment(chosen, REFERENCE_BOARD, out_dir,
+                                                  serial_plays=ground_checks.SERIAL_PLAYS_CI if self.args.full else 0)
+            elf = next(iter(sorted(out_dir.glob("twister/**/zephyr/zephyr.elf"))), None)
+            if elf is None:
+                LOG.error(f"  no build of {chosen.name} under {out_dir / 'twister'} for west kit sizing")
+                tally.add(Tally(0, 1))
+            else:
+                tally.add(imported.west_kit(team, ["sizing", str(elf.parent.parent)], out_dir / "west-kit-sizing.log",
+                                            expect="command dispatch table"))
+        return tally
 
     def budget(self, board: str) -> Tally:
         self.size_reports.result()
@@ -209,9 +225,10 @@ class FullRun:
                 steps.add_qemu("report: every board side by side (what fits where)", functools.partial(
                     verdict.report_side_by_side, boards + self.small + self.built_only, self.log_dir))
             if REFERENCE_BOARD in boards and last_share(subset):
-                steps.add_qemu(f"second deployment: {deployment.label(SECOND_DEPLOYMENT)} through the seam, every "
-                               f"model on {REFERENCE_BOARD}: {', '.join(deployment_run.SCENARIOS)}, ground link, "
-                               "report", self.second_deployment)
+                steps.add_qemu(f"second deployment: {deployment.label(SECOND_DEPLOYMENT)} through the seam, from a "
+                               f"repository whose west.yml imports the kit, every model on {REFERENCE_BOARD}: "
+                               f"{', '.join(deployment_run.SCENARIOS)}, ground link, report, west kit",
+                               self.second_deployment)
         # A split run shares out the steps beside twister: the porting check (the
         # longest) to the first shard, the host's and the device path to the
         # last (measured on two shares of today's suite: the porting check took

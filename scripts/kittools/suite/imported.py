@@ -1,0 +1,96 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The kit imported by another repository's west.yml, as a team uses it
+(docs/your-deployment.md): the team's repository is the manifest
+repository and its own F´ project, the kit a project of its manifest whose
+upstreams land in the kit's deps/ (`path: .`, `import: path-prefix:`), and
+`west kit ...` runs in that workspace.
+
+CI makes one in a scratch folder outside the clone: the kit is this clone
+(a link to it: west update finds every pin checked out and fetches
+nothing), the team's repository a copy of an F´ project of tests/."""
+
+from __future__ import annotations
+
+import contextlib
+import shutil
+import subprocess
+import sys
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+from kittools.log import LOG
+from kittools.suite.counts import Tally, run_logged
+from kittools.workspace import KIT_ROOT, KitError
+
+#: The kit's folder in the importing workspace, beside the team's repository
+KIT_FOLDER = "kit"
+#: The team's repository (the manifest repository) in that workspace
+TEAM_FOLDER = "team"
+#: west's own branch in each project of a workspace: the revision its manifest pins
+MANIFEST_REV = "refs/heads/manifest-rev"
+
+
+def manifest(url: str, revision: str, kit_folder: str = KIT_FOLDER, team_folder: str = TEAM_FOLDER) -> str:
+    """A team's west.yml importing the kit: the kit at `kit_folder` and, with
+    the same prefix, its upstreams in `kit_folder`/deps (where the kit reads
+    them, as in its own workspace)."""
+    return (
+        'manifest:\n  version: "1.2"\n'
+        f"  self:\n    path: {team_folder}\n"
+        "  projects:\n"
+        "    - name: fprime-zephyr-kit\n"
+        f"      url: {url}\n"
+        f"      revision: {revision}\n"
+        "      path: .\n"
+        "      import:\n"
+        f"        path-prefix: {kit_folder}\n"
+    )
+
+
+def _west(args: list[str], cwd: Path, log: Path) -> None:
+    if run_logged([sys.executable, "-m", "west", *args], log, cwd=cwd) != 0:
+        raise KitError(f"west {' '.join(args)} failed in the importing workspace; see {log}")
+
+
+def _git(args: list[str]) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(["git", "-C", str(KIT_ROOT), *args], capture_output=True, text=True, check=False)
+
+
+@contextlib.contextmanager
+def importing_workspace(project: Path, log_dir: Path) -> Iterator[Path]:
+    """A west workspace outside the clone whose manifest repository, a copy
+    of the F´ project `project`, imports this clone; yields that copy, and
+    removes the workspace after. The clone keeps no trace of it (west's
+    manifest-rev branch, which its update adds to the kit, is taken off)."""
+    head = _git(["rev-parse", "HEAD"])
+    if head.returncode != 0:
+        raise KitError(f"the kit at {KIT_ROOT} is not a git clone: a west manifest cannot import it")
+    had_manifest_rev = _git(["rev-parse", "--verify", "--quiet", MANIFEST_REV]).returncode == 0
+    with tempfile.TemporaryDirectory(prefix="kit-import-") as scratch:
+        top = Path(scratch)
+        team = top / TEAM_FOLDER
+        shutil.copytree(project, team)
+        (top / KIT_FOLDER).symlink_to(KIT_ROOT, target_is_directory=True)
+        (team / "west.yml").write_text(manifest(KIT_ROOT.as_uri(), head.stdout.strip()))
+        try:
+            _west(["init", "-l", str(team)], top, log_dir / "import-west-init.log")
+            _west(["update"], team, log_dir / "import-west-update.log")
+            LOG.info(f"  importing workspace: {top} ({TEAM_FOLDER}/west.yml imports the kit at {KIT_FOLDER}/)")
+            yield team
+        finally:
+            if not had_manifest_rev:
+                _git(["update-ref", "-d", MANIFEST_REV])
+
+
+def west_kit(team: Path, args: list[str], log: Path, expect: str) -> Tally:
+    """`west kit <args>` from the team's repository: one check, passed when
+    west finds the kit's extension command through the import and the
+    command's output says `expect`."""
+    code = run_logged([sys.executable, "-m", "west", "kit", *args], log, cwd=team)
+    text = log.read_text(errors="replace") if log.is_file() else ""
+    if code == 0 and expect in text:
+        LOG.info(f"  west kit {' '.join(args[:1])} from the importing repository: PASS")
+        return Tally(1, 0)
+    LOG.error(f"  west kit {' '.join(args)} from the importing repository failed (exit {code}); see {log}")
+    return Tally(0, 1)
