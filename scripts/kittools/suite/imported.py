@@ -20,8 +20,8 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from kittools.log import LOG
-from kittools.suite.counts import Tally, run_logged
-from kittools.workspace import KIT_ROOT, KitError
+from kittools.suite.counts import Tally
+from kittools.workspace import KIT_ROOT, KitError, environment
 
 #: The kit's folder in the importing workspace, beside the team's repository
 KIT_FOLDER = "kit"
@@ -48,8 +48,20 @@ def manifest(url: str, revision: str, kit_folder: str = KIT_FOLDER, team_folder:
     )
 
 
+def _run_west(args: list[str], cwd: Path, log: Path) -> int:
+    """west in the importing workspace, found from `cwd` as a user's west
+    finds it: without the ZEPHYR_BASE the kit's own runs set, which would
+    point west at the clone's own workspace instead."""
+    env = environment()
+    env.pop("ZEPHYR_BASE", None)
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with log.open("w") as out:
+        return subprocess.run([sys.executable, "-m", "west", *args], cwd=cwd, env=env, stdout=out,
+                              stderr=subprocess.STDOUT, check=False).returncode
+
+
 def _west(args: list[str], cwd: Path, log: Path) -> None:
-    if run_logged([sys.executable, "-m", "west", *args], log, cwd=cwd) != 0:
+    if _run_west(args, cwd, log) != 0:
         raise KitError(f"west {' '.join(args)} failed in the importing workspace; see {log}")
 
 
@@ -61,12 +73,14 @@ def _git(args: list[str]) -> subprocess.CompletedProcess[str]:
 def importing_workspace(project: Path, log_dir: Path) -> Iterator[Path]:
     """A west workspace outside the clone whose manifest repository, a copy
     of the F´ project `project`, imports this clone; yields that copy, and
-    removes the workspace after. The clone keeps no trace of it (west's
-    manifest-rev branch, which its update adds to the kit, is taken off)."""
+    removes the workspace after. The clone keeps no trace of it: west's
+    manifest-rev branch, which its update adds to the kit, is taken off,
+    and the clone's branch, which it leaves for the pin, put back."""
     head = _git(["rev-parse", "HEAD"])
     if head.returncode != 0:
         raise KitError(f"the kit at {KIT_ROOT} is not a git clone: a west manifest cannot import it")
     had_manifest_rev = _git(["rev-parse", "--verify", "--quiet", MANIFEST_REV]).returncode == 0
+    branch = _git(["symbolic-ref", "-q", "HEAD"]).stdout.strip()
     with tempfile.TemporaryDirectory(prefix="kit-import-") as scratch:
         top = Path(scratch)
         team = top / TEAM_FOLDER
@@ -81,13 +95,17 @@ def importing_workspace(project: Path, log_dir: Path) -> Iterator[Path]:
         finally:
             if not had_manifest_rev:
                 _git(["update-ref", "-d", MANIFEST_REV])
+            # west update checks the kit's pin out detached (the same commit):
+            # the clone gets its branch back, its tree untouched
+            if branch and _git(["rev-parse", "HEAD"]).stdout == head.stdout:
+                _git(["symbolic-ref", "HEAD", branch])
 
 
 def west_kit(team: Path, args: list[str], log: Path, expect: str) -> Tally:
     """`west kit <args>` from the team's repository: one check, passed when
     west finds the kit's extension command through the import and the
     command's output says `expect`."""
-    code = run_logged([sys.executable, "-m", "west", "kit", *args], log, cwd=team)
+    code = _run_west(["kit", *args], team, log)
     text = log.read_text(errors="replace") if log.is_file() else ""
     if code == 0 and expect in text:
         LOG.info(f"  west kit {' '.join(args[:1])} from the importing repository: PASS")
