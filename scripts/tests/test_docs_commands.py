@@ -36,10 +36,13 @@ def _commands(prefix: str) -> list[list[str]]:
 
 KIT_COMMANDS = _commands("scripts/kit ")
 WEST_BUILDS = _commands("west build -b ")
+#: west kit, in the workspace of a repository that imports the kit: run from
+#: that repository, which holds the deployment (tests/team in CI)
+WEST_KIT_COMMANDS = _commands("west kit ")
 
 
 def test_the_page_gives_commands():
-    assert len(KIT_COMMANDS) >= 5 and WEST_BUILDS
+    assert len(KIT_COMMANDS) >= 5 and WEST_BUILDS and len(WEST_KIT_COMMANDS) >= 2
 
 
 @pytest.mark.parametrize("words", KIT_COMMANDS, ids=lambda words: " ".join(words[1:3]))
@@ -71,3 +74,26 @@ def test_the_whole_run_the_page_promises_is_the_one_ci_makes():
     runs = [words for words in KIT_COMMANDS if words[1] == "test" and "--deployment" in words]
     assert runs, "the page gives no kit test --deployment"
     assert KIT_ROOT / PLACEHOLDERS["<folder>"] == test_command.SECOND_DEPLOYMENT
+
+
+@pytest.mark.parametrize("words", WEST_KIT_COMMANDS, ids=lambda words: " ".join(words[2:4]))
+def test_each_west_kit_command_parses_and_names_a_deployment_of_the_importing_repository(words: list[str]):
+    args = cli.parser().parse_args(words[2:])
+    if getattr(args, "deployment", None):
+        # The page's MyDeployment is tests/team's Thermal
+        deployment.resolve(KIT_ROOT / "tests" / "team" / args.deployment.replace("MyDeployment", "Thermal"))
+
+
+def test_the_importing_manifest_on_the_page_is_the_one_ci_makes():
+    """The page's west.yml imports the kit as kittools.suite.imported does."""
+    import yaml
+
+    from kittools.suite import imported
+
+    page = next(block for block in re.findall(r"^```yaml\n(.*?)^```", PAGE.read_text(), re.MULTILINE | re.DOTALL))
+    shown = yaml.safe_load(page)["manifest"]
+    made = yaml.safe_load(imported.manifest("url", "revision"))["manifest"]
+    assert shown["self"] == made["self"]
+    (kit,) = shown["projects"]
+    keys = ("name", "path", "import")
+    assert {k: kit[k] for k in keys} == {k: made["projects"][0][k] for k in keys}

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from kittools import deployment, variants
 from kittools.boards.scaffold import REFERENCE_BOARD
+from kittools.build.folder import BuildFolder
 from kittools.link import serial_points
 from kittools.log import LOG
 from kittools.suite import (
@@ -161,12 +162,12 @@ class FullRun:
             # the reference deployment's builds
             tally = deployment_run.run_deployment(chosen, REFERENCE_BOARD, out_dir,
                                                   serial_plays=ground_checks.SERIAL_PLAYS_CI if self.args.full else 0)
-            elf = next(iter(sorted(out_dir.glob("twister/**/zephyr/zephyr.elf"))), None)
-            if elf is None:
+            builds = sorted(BuildFolder.built_under(out_dir / "twister"), key=lambda build: build.path)
+            if not builds:
                 LOG.error(f"  no build of {chosen.name} under {out_dir / 'twister'} for west kit sizing")
                 tally.add(Tally(0, 1))
             else:
-                tally.add(imported.west_kit(team, ["sizing", str(elf.parent.parent)], out_dir / "west-kit-sizing.log",
+                tally.add(imported.west_kit(team, ["sizing", str(builds[0].path)], out_dir / "west-kit-sizing.log",
                                             expect="command dispatch table"))
         return tally
 
