@@ -103,8 +103,43 @@ function(kit_check_deployment DIR)
     endif()
 endfunction()
 
+# The priority, stack and queue table a deployment builds with on a board
+# (docs/your-deployment.md): its board's own (Top/boards/<board folder>/
+# Tables.fpp, for a board whose measured stacks or priorities differ; the
+# reference deployment's are in the board's folder, boards/<board>/
+# Tables.fpp, where kit new-board puts them), else its table for every
+# board (Top/Tables.fpp). A deployment with neither for the board is
+# refused, naming the boards it has tables for.
+function(kit_deployment_tables OUT DIR BOARD)
+    set(KIT_CANDIDATES "${DIR}/Top/boards/${BOARD}/Tables.fpp")
+    cmake_path(ABSOLUTE_PATH DIR NORMALIZE OUTPUT_VARIABLE KIT_FOLDER)
+    if(KIT_FOLDER STREQUAL "${KIT_ROOT}/app")
+        list(APPEND KIT_CANDIDATES "${KIT_ROOT}/boards/${BOARD}/Tables.fpp")
+    endif()
+    list(APPEND KIT_CANDIDATES "${DIR}/Top/Tables.fpp")
+    foreach(KIT_CANDIDATE IN LISTS KIT_CANDIDATES)
+        if(EXISTS "${KIT_CANDIDATE}")
+            set(${OUT} "${KIT_CANDIDATE}" PARENT_SCOPE)
+            return()
+        endif()
+    endforeach()
+    file(GLOB KIT_TABLE_BOARDS RELATIVE "${DIR}/Top/boards" "${DIR}/Top/boards/*/Tables.fpp")
+    list(TRANSFORM KIT_TABLE_BOARDS REPLACE "/Tables.fpp$" "")
+    if(NOT KIT_TABLE_BOARDS)
+        set(KIT_TABLE_BOARDS "none")
+    endif()
+    message(FATAL_ERROR "kit: the deployment '${DIR}' has no table for board '${BOARD}' (boards it has one for: "
+        "${KIT_TABLE_BOARDS}): add its priorities, stacks and queues for this board in "
+        "Top/boards/${BOARD}/Tables.fpp, or for every board in Top/Tables.fpp. The seam a deployment provides: "
+        "docs/your-deployment.md.")
+endfunction()
+
 # The same check from the kit's commands, before any build starts:
 #   cmake -DKIT_ROOT=<kit> -DKIT_DEPLOYMENT_DIR=<folder> -P app/deployment.cmake
+#   ... and with -DKIT_BOARDS=<board folder>;... its table for each board
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
     kit_check_deployment("${KIT_DEPLOYMENT_DIR}")
+    foreach(KIT_BOARD_FOLDER IN LISTS KIT_BOARDS)
+        kit_deployment_tables(KIT_TABLES "${KIT_DEPLOYMENT_DIR}" "${KIT_BOARD_FOLDER}")
+    endforeach()
 endif()

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import re
 import subprocess
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from kittools.workspace import KIT_ROOT, KitError
+from kittools.workspace import KIT_ROOT, KitError, check_board
 
 #: The kit's reference deployment
 REFERENCE = KIT_ROOT / "app"
@@ -58,12 +59,15 @@ def label(path: Path) -> str:
         return str(path)
 
 
-def resolve(folder: str | Path | None) -> Deployment:
+def resolve(folder: str | Path | None, boards: Sequence[str] = ()) -> Deployment:
     """The deployment in `folder` (None: the reference), checked against the
-    seam's rules; KitError with the one thing it lacks otherwise."""
+    seam's rules, with its table for each of `boards` (board targets);
+    KitError with the one thing it lacks otherwise."""
     path = REFERENCE if folder is None else Path(folder).expanduser().resolve()
-    result = subprocess.run(["cmake", f"-DKIT_ROOT={KIT_ROOT}", f"-D{CACHE_ENTRY}={path}", "-P", str(SEAM_RULES)],
-                            capture_output=True, text=True)
+    command = ["cmake", f"-DKIT_ROOT={KIT_ROOT}", f"-D{CACHE_ENTRY}={path}"]
+    if boards:
+        command.append(f"-DKIT_BOARDS={';'.join(check_board(board) for board in boards)}")
+    result = subprocess.run([*command, "-P", str(SEAM_RULES)], capture_output=True, text=True)
     if result.returncode != 0:
         message = " ".join(line.strip() for line in result.stderr.splitlines()
                            if line.strip() and not line.startswith(("CMake Error", "Call Stack"))

@@ -244,3 +244,30 @@ def test_a_link_record_an_earlier_run_left_never_joins_this_runs_results(monkeyp
     tally = ground_checks.deployment_link_checks("qemu_cortex_m3/ti_lm3s6965", tmp_path / "kit.rtos", tmp_path)
     assert tally == Tally(3, 0)
     assert not any((logs / file_name).exists() for file_name in results.LINK_RECORD_FILES)
+
+
+def test_a_deployment_builds_on_a_board_with_its_boards_table_or_its_own(inside_kit: Path):
+    """Top/boards/<board>/Tables.fpp for a board whose stacks or priorities
+    differ, else Top/Tables.fpp; a board with neither is one clear error
+    that names the boards the deployment has tables for."""
+    mine = _seam(inside_kit / "mine")
+    with pytest.raises(KitError, match=r"no table for board 'mps2_an385' \(boards it has one for: none\)"):
+        deployment.resolve(mine, ["mps2/an385"])
+    (mine / "Top" / "boards" / "qemu_cortex_m3").mkdir(parents=True)
+    (mine / "Top" / "boards" / "qemu_cortex_m3" / "Tables.fpp").write_text("module Kit {\n}\n")
+    assert deployment.resolve(mine, ["qemu_cortex_m3"]).path == mine
+    with pytest.raises(KitError) as error:
+        deployment.resolve(mine, ["qemu_cortex_m3", "mps2/an385"])
+    message = str(error.value)
+    assert "boards it has one for: qemu_cortex_m3" in message and "Top/boards/mps2_an385/Tables.fpp" in message
+    assert "\n" not in message and ".cmake:" not in message
+    (mine / "Top" / "Tables.fpp").write_text("module Kit {\n}\n")
+    assert deployment.resolve(mine, ["qemu_cortex_m3", "mps2/an385"]).path == mine
+
+
+def test_the_reference_and_the_second_deployment_have_a_table_for_every_board():
+    from kittools import workspace
+
+    boards = workspace.ported_boards()
+    assert deployment.resolve(None, boards).is_reference
+    assert deployment.resolve(KIT_ROOT / "tests" / "team" / "Thermal", boards).name == "tests/team/Thermal"

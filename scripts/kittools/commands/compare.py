@@ -52,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
     for board in boards:
         platforms.check_runs_here(board)
     check_provisioned()
-    chosen = deployment.resolve(args.deployment)
+    chosen = deployment.resolve(args.deployment, boards)
     # A deployment's builds are its own: never the reference's folders
     out_dir = Path(args.output or DEFAULT_OUTPUT + chosen.output_suffix()).resolve()
     say(f"deployment: {chosen.name}")

@@ -18,7 +18,7 @@ def run(args: argparse.Namespace) -> int:
     models = args.model or list(variants.names())
     for model in models:
         variants.get(model)  # as in ground_build
-    chosen = deployment.resolve(args.deployment)
+    chosen = deployment.resolve(args.deployment, [args.board])
     suffix = chosen.output_suffix()
     if not args.report_only:
         check_provisioned()

@@ -21,7 +21,7 @@ def ground_build(args: argparse.Namespace) -> tuple[Path, Path]:
     platforms.check_runs_here(args.board)
     variants.get(args.model)  # argparse checks the name only when it comes from the command line
     check_provisioned()
-    chosen = deployment.resolve(args.deployment)
+    chosen = deployment.resolve(args.deployment, [args.board])
     build_dir = ground.ground_build_dir(args.board, args.model, chosen)
     logs = build_dir.with_name(build_dir.name + "-logs")
     say(f"building {args.board} {args.model} of deployment {chosen.name} (ground scenario) ...")

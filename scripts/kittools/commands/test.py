@@ -155,7 +155,7 @@ class FullRun:
         (kittools.suite.deployment_run), and `west kit sizing` of one of
         its builds from that repository."""
         with imported.importing_workspace(SECOND_DEPLOYMENT.parent, self.log_dir) as team:
-            chosen = deployment.resolve(team / SECOND_DEPLOYMENT.name)
+            chosen = deployment.resolve(team / SECOND_DEPLOYMENT.name, [REFERENCE_BOARD])
             out_dir = deployment_log_dir(self.log_dir, chosen)
             # Its serial-load sweep in the full run only: about 50 s a model,
             # and the link it measures is the kit's, which CI's run sweeps on
@@ -271,7 +271,7 @@ def deployment_plan(args: argparse.Namespace) -> Plan:
     for board in boards:
         platforms.check_runs_here(board)
     check_provisioned()
-    chosen = deployment.resolve(args.deployment)
+    chosen = deployment.resolve(args.deployment, boards)
     log_dir = deployment_log_dir(Path(args.output).resolve(), chosen)
     steps = Plan()
     for board in boards:
