@@ -137,8 +137,12 @@ endfunction()
 # The same check from the kit's commands, before any build starts:
 #   cmake -DKIT_ROOT=<kit> -DKIT_DEPLOYMENT_DIR=<folder> -P app/deployment.cmake
 #   ... and with -DKIT_BOARDS=<board folder>;... its table for each board
+# It prints the F´ project the deployment is named from:
+#   -- KIT_DEPLOYMENT_LOCATION=<folder>
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
     kit_check_deployment("${KIT_DEPLOYMENT_DIR}")
+    kit_deployment_location(KIT_LOCATION "${KIT_DEPLOYMENT_DIR}")
+    message(STATUS "KIT_DEPLOYMENT_LOCATION=${KIT_LOCATION}")
     foreach(KIT_BOARD_FOLDER IN LISTS KIT_BOARDS)
         kit_deployment_tables(KIT_TABLES "${KIT_DEPLOYMENT_DIR}" "${KIT_BOARD_FOLDER}")
     endforeach()

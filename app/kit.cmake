@@ -29,6 +29,8 @@ kit_check_deployment("${KIT_DEPLOYMENT_DIR}")
 # Where its modules are named from: the kit's repository, or the team's own
 # F´ project for a folder outside it, which F´ then builds modules in too
 kit_deployment_location(KIT_DEPLOYMENT_LOCATION "${KIT_DEPLOYMENT_DIR}")
+# ... kept in the cache, where the kit's tools read it (kittools.deployment)
+set(KIT_DEPLOYMENT_LOCATION "${KIT_DEPLOYMENT_LOCATION}" CACHE INTERNAL "The F´ project the deployment is named from")
 if(NOT KIT_DEPLOYMENT_LOCATION STREQUAL KIT_ROOT)
     set(FPRIME_ZEPHYR_EXTRA_LOCATIONS "${KIT_DEPLOYMENT_LOCATION}")
 endif()

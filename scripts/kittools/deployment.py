@@ -7,6 +7,7 @@ clear error before any build."""
 
 from __future__ import annotations
 
+import contextlib
 import re
 import subprocess
 from collections.abc import Sequence
@@ -23,6 +24,10 @@ SEAM_RULES = KIT_ROOT / "app" / "deployment.cmake"
 _CMAKE_LOCATION = re.compile(r"\.cmake:\d+ \(")
 #: The CMake cache entry that names a build's deployment (app/kit.cmake)
 CACHE_ENTRY = "KIT_DEPLOYMENT_DIR"
+#: ... and the one that names the F´ project it is named from
+LOCATION_ENTRY = "KIT_DEPLOYMENT_LOCATION"
+#: The seam's rules print that project
+_LOCATION_LINE = re.compile(rf"^-- {LOCATION_ENTRY}=(.+)$", re.MULTILINE)
 
 
 @dataclass(frozen=True)
@@ -30,6 +35,9 @@ class Deployment:
     """A deployment folder, checked against the seam."""
 
     path: Path
+    #: The F´ project it is named from (app/deployment.cmake): the kit's
+    #: repository, or a team's own project
+    location: Path = KIT_ROOT
 
     @property
     def is_reference(self) -> bool:
@@ -37,8 +45,9 @@ class Deployment:
 
     @property
     def name(self) -> str:
-        """Its folder, relative to the kit ("app" for the reference)."""
-        return label(self.path)
+        """Its folder, relative to the kit ("app" for the reference), or in
+        its own F´ project ("<project>/MyDeployment")."""
+        return label(self.path, self.location)
 
     def cmake_args(self) -> list[str]:
         """What a build of it adds to CMake's command line: nothing for the
@@ -51,12 +60,17 @@ class Deployment:
         return "" if self.is_reference else f"-{self.path.name}"
 
 
-def label(path: Path) -> str:
-    """A deployment folder as the report names it: relative to the kit."""
-    try:
-        return str(path.resolve().relative_to(KIT_ROOT))
-    except ValueError:
-        return str(path)
+def label(path: Path, location: Path | None = None) -> str:
+    """A deployment folder as the report names it: relative to the kit, or,
+    outside it, from its F´ project's folder ("team/Thermal"), so that a
+    report names a team's deployment alike wherever its clone is."""
+    resolved = path.resolve()
+    with contextlib.suppress(ValueError):
+        return str(resolved.relative_to(KIT_ROOT))
+    if location is not None:
+        with contextlib.suppress(ValueError):
+            return str(Path(location.name) / resolved.relative_to(location.resolve()))
+    return str(path)
 
 
 def resolve(folder: str | Path | None, boards: Sequence[str] = ()) -> Deployment:
@@ -74,4 +88,5 @@ def resolve(folder: str | Path | None, boards: Sequence[str] = ()) -> Deployment
                            and not _CMAKE_LOCATION.search(line))
         raise KitError(" ".join(message.split())
                        or f"the deployment folder {path} failed the seam's check ({SEAM_RULES})")
-    return Deployment(path)
+    found = _LOCATION_LINE.search(result.stdout)
+    return Deployment(path, Path(found.group(1).strip()) if found else KIT_ROOT)

@@ -87,7 +87,8 @@ def test_a_deployment_in_a_teams_own_fprime_project_passes(tmp_path: Path):
     (the nearest settings.ini above it: app/deployment.cmake)."""
     (tmp_path / "settings.ini").write_text("[fprime]\nproject_root: .\n")
     mine = deployment.resolve(_seam(tmp_path / "MyDeployment"))
-    assert not mine.is_reference and mine.name == str(tmp_path / "MyDeployment")
+    assert not mine.is_reference and mine.location == tmp_path
+    assert mine.name == f"{tmp_path.name}/MyDeployment"  # named from its project, wherever that is
     assert mine.output_suffix() == "-MyDeployment"
 
 
@@ -104,6 +105,10 @@ def test_a_builds_conditions_name_its_deployment(tmp_path: Path):
     assert conditions.deployment(BuildFolder(build)) == "tests/mine"
     (build / "CMakeCache.txt").write_text("CMAKE_BUILD_TYPE:STRING=\n")
     assert conditions.deployment(BuildFolder(build)) == "unknown"
+    project = tmp_path / "team"
+    (build / "CMakeCache.txt").write_text(f"KIT_DEPLOYMENT_DIR:PATH={project / 'Thermal'}\n"
+                                          f"KIT_DEPLOYMENT_LOCATION:INTERNAL={project}\n")
+    assert conditions.deployment(BuildFolder(build)) == "team/Thermal"
 
 
 @pytest.mark.parametrize("command", ["compare", "gds", "serial-sweep", "footprint"])

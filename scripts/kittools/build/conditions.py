@@ -8,7 +8,7 @@ import subprocess
 from pathlib import Path
 
 from kittools.build.folder import BuildFolder
-from kittools.deployment import CACHE_ENTRY, label
+from kittools.deployment import CACHE_ENTRY, LOCATION_ENTRY, label
 
 # Kconfig values that change what the kit measures
 KCONFIG = (
@@ -38,7 +38,8 @@ def deployment(folder: BuildFolder) -> str:
     """The F´ deployment the build measures (its folder, relative to the
     kit: "app" for the reference one), or "unknown"."""
     path = folder.cache_value(CACHE_ENTRY) if folder.configured() else None
-    return label(Path(path)) if path else "unknown"
+    location = folder.cache_value(LOCATION_ENTRY) if path else None
+    return label(Path(path), Path(location) if location else None) if path else "unknown"
 
 
 def read(build_dir: Path) -> dict[str, object]:
