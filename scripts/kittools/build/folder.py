@@ -31,6 +31,8 @@ DICTIONARIES = "build-artifacts/**/dict/*TopologyDictionary.json"
 FPP_CONSTANTS = "F-Prime/default/config/FppConstantsAc.hpp"
 #: Where twister's QEMU handler keeps a build's console
 CONSOLE_LOG = "handler.log"
+#: Where twister keeps a build's output (the compiler's and the linker's)
+BUILD_LOG = "build.log"
 
 #: The kit's Kconfig files: the models', the deployment's, the boards' defaults, the modules'
 KIT_KCONFIG_FILES = ("app/**/Kconfig*", "*/Kconfig.model", "boards/**/Kconfig*", "modules/**/Kconfig*")
@@ -126,6 +128,10 @@ class BuildFolder:
     @property
     def console_log(self) -> Path:
         return self.path / CONSOLE_LOG
+
+    @property
+    def build_log(self) -> Path:
+        return self.path / BUILD_LOG
 
     def configured(self) -> bool:
         """CMake configured the folder (it has a cache)."""

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from kittools.build.folder import CONSOLE_LOG, BuildFolder, kit_kconfig_digest
-from kittools.log import say
+from kittools.log import LOG, say
 from kittools.sizes import memory
-from kittools.suite import floor, results
+from kittools.suite import fit, floor, results
 from kittools.suite.counts import Tally, twister_tally
 from kittools.suite.platforms import TWISTER_OUT
 from kittools.workspace import KIT_ROOT, KitError, commit_label, environment
@@ -158,6 +158,8 @@ def run_twister(platforms: list[str], log_dir: Path, out_dir: Path = TWISTER_OUT
     for argument in cmake_args:
         command.append("-x=" + argument.removeprefix("-D"))
     tally = play(command, log_dir / "twister.log", out_dir)
+    for overflow in fit.overflows(out_dir):
+        LOG.error(f"  {overflow.text()}")
     say_built_only(out_dir)
     say_profiles(out_dir)
     return tally
