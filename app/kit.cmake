@@ -134,6 +134,12 @@ macro(kit_deployment)
     add_fprime_subdirectory("${KIT_ROOT}/app/Subtopologies/GroundLink")
     add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/Components")
     add_fprime_subdirectory("${KIT_DEPLOYMENT_DIR}/Top")
+    # A deployment in its own F´ project: its includes from that project's root
+    if(FPRIME_ZEPHYR_EXTRA_LOCATIONS)
+        foreach(KIT_PART IN ITEMS config Components Top)
+            fprime_zephyr_location_includes("${KIT_DEPLOYMENT_DIR}/${KIT_PART}" "${KIT_DEPLOYMENT_LOCATION}")
+        endforeach()
+    endif()
 
     # The execution model (CONFIG_KIT_MODEL_*): its folder's model.cmake
     # registers its config and OS layer and sets KIT_MODEL_SOURCES and

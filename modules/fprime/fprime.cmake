@@ -107,9 +107,10 @@ macro(fprime_zephyr_setup)
     fprime_zephyr_native_fpp()
     include("${FPRIME_FRAMEWORK_PATH}/cmake/FPrime.cmake")
     # Module locations beyond settings.ini's (FPRIME_ZEPHYR_EXTRA_LOCATIONS):
-    # another F´ project whose modules the application builds, named and
-    # included from its own root as in that project. They are not library
-    # locations: F´ would warn that one has no library.cmake and skip it.
+    # another F´ project whose modules the application builds, named from
+    # its own root as in that project (its includes:
+    # fprime_zephyr_location_includes). They are not library locations: F´
+    # would warn that one has no library.cmake and skip it.
     # F´ names a file from the first location that holds it, and fails when a
     # later one gives it a name that is not a tail of that one: a location
     # nested in another (a project inside the application's repository) goes
@@ -129,7 +130,6 @@ macro(fprime_zephyr_setup)
         else()
             list(INSERT FPRIME_BUILD_LOCATIONS ${FPRIME_ZEPHYR_AT} "${FPRIME_ZEPHYR_LOCATION}")
         endif()
-        include_directories("${FPRIME_ZEPHYR_LOCATION}")
     endforeach()
     fprime_setup_included_code()
     # After every module of the application has registered its configuration
@@ -147,3 +147,28 @@ macro(fprime_zephyr_setup)
         endif()
     endforeach()
 endmacro()
+
+# The include root of an extra module location (FPRIME_ZEPHYR_EXTRA_LOCATIONS)
+# for the targets its folder DIR registered, at any depth, and for what
+# links them (PUBLIC): "<deployment>/Top/..." as the project writes it. Not
+# for every target: a location outside the application's tree would put its
+# absolute path on every compile line, and ccache, which keys on the command
+# line, would miss on every F´ object of every new scratch folder.
+function(fprime_zephyr_location_includes DIR LOCATION)
+    set(FPRIME_ZEPHYR_DIRS "${DIR}")
+    # Bounded: each folder is taken once, and the folder tree is finite
+    while(FPRIME_ZEPHYR_DIRS)
+        list(POP_FRONT FPRIME_ZEPHYR_DIRS FPRIME_ZEPHYR_DIR)
+        get_property(FPRIME_ZEPHYR_TARGETS DIRECTORY "${FPRIME_ZEPHYR_DIR}" PROPERTY BUILDSYSTEM_TARGETS)
+        foreach(FPRIME_ZEPHYR_TARGET IN LISTS FPRIME_ZEPHYR_TARGETS)
+            get_target_property(FPRIME_ZEPHYR_TYPE "${FPRIME_ZEPHYR_TARGET}" TYPE)
+            if(FPRIME_ZEPHYR_TYPE STREQUAL "INTERFACE_LIBRARY")
+                target_include_directories("${FPRIME_ZEPHYR_TARGET}" INTERFACE "${LOCATION}")
+            elseif(NOT FPRIME_ZEPHYR_TYPE STREQUAL "UTILITY")
+                target_include_directories("${FPRIME_ZEPHYR_TARGET}" PUBLIC "${LOCATION}")
+            endif()
+        endforeach()
+        get_property(FPRIME_ZEPHYR_SUBDIRS DIRECTORY "${FPRIME_ZEPHYR_DIR}" PROPERTY SUBDIRECTORIES)
+        list(APPEND FPRIME_ZEPHYR_DIRS ${FPRIME_ZEPHYR_SUBDIRS})
+    endwhile()
+endfunction()
