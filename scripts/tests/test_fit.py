@@ -38,3 +38,14 @@ def test_a_build_that_passed_or_failed_otherwise_says_nothing(tmp_path: Path):
     assert fit.overflows(_twister_out(tmp_path / "a", "passed", LINKER)) == []
     assert fit.overflows(_twister_out(tmp_path / "b", "error", "error: 'x' was not declared in this scope\n")) == []
     assert fit.overflows(tmp_path / "nothing") == []
+
+
+def test_a_build_that_never_linked_is_left_out_of_the_suites_builds(tmp_path: Path):
+    """The other models' builds are still compared (kit compare, the reports)."""
+    from kittools.suite import results
+
+    out = _twister_out(tmp_path, "error", LINKER)
+    assert results.suite_builds(out) == []
+    elf = out / "qemu_cortex_m3_ti_lm3s6965" / "deployment" / "kit.rtos" / "zephyr" / "zephyr.elf"
+    elf.touch()  # it linked, then failed: counted, and listed
+    assert [build.name for _, build in results.suite_builds(out)] == ["kit.rtos"]

@@ -125,6 +125,9 @@ def suite_builds(twister_out: Path, board: str | None = None, prefix: str = "kit
         platform, name = suite.get("platform", ""), suite.get("name", "").rsplit("/", 1)[-1]
         if (board is None or _same_board(platform, board)) and name.startswith(prefix) \
                 and suite.get("status") not in ("filtered", "skipped"):
+            if suite.get("status") == "error" and not BuildFolder.built_under(
+                    twister_out / platform.replace("/", "_"), name):
+                continue  # it never linked: twister counted it, and kittools.suite.fit says why when it did not fit
             found.append((platform, twister_build(twister_out, platform, name)))
     return sorted(found, key=lambda pair: (pair[0], pair[1].name))
 
@@ -282,5 +285,5 @@ def from_twister(twister_out: Path, board: str, log_dir: Path | None = None) -> 
     found, floors = collect(twister_out, board, log_dir)
     if not found:
         raise KitError(f"twister run in {twister_out} played no nominal scenario on {board} "
-                       f"(no {RUNS_DIR}/nominal.log in its builds)")
+                       f"(no {RUNS_DIR}/nominal.log in its builds; a build that failed is named above)")
     return assemble(found, floors, board)
