@@ -182,3 +182,15 @@ def test_the_budget_holds_breaking_points_not_serial_latencies():
     further = copy.deepcopy(baseline)
     further.variants["rtos"].records += _serial("noise", 100, 5, 900, slips=4)
     assert budget.check(further, baseline).passed
+
+
+def test_the_fastest_period_is_the_deployments_own_fastest_group():
+    """A deployment whose fastest group is slower than the tick (tests/team/Thermal:
+    50 Hz on a 1 kHz tick) has its sweep's breaking points set against 20,000 µs,
+    not the tick's 1,000 µs."""
+    data = _results()
+    assert analysis.fastest_period_us(data) == 1000.0  # the reference: its 1 kHz group
+    for variant in data.variants.values():
+        for record in variant.of_kind("RG"):
+            record["hz"] = str(int(record["hz"]) // 20)
+    assert analysis.fastest_period_us(data) == 20000.0

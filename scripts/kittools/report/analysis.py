@@ -105,7 +105,13 @@ def sweeps(data: Results) -> dict[str, sweep.Sweep]:
 
 
 def fastest_period_us(data: Results) -> float:
-    """Period of the fastest rate group, in µs (the tick's)."""
+    """Period of the fastest rate group, in µs: from its RG records (rate
+    `hz`), so that any deployment's is its own (tests/team/Thermal's 50 Hz
+    group: 20,000 µs); the tick's where a run has none."""
+    rates = [float(r["hz"]) for name in data.names() for r in data.variants[name].of_kind("RG")
+             if float(r.get("hz", 0) or 0) > 0]
+    if rates:
+        return 1e6 / max(rates)
     tick_hz = data.condition("tick_hz")
     return 1e6 / tick_hz if tick_hz > 0 else 0.0
 
