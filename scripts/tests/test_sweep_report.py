@@ -108,7 +108,9 @@ def test_the_tasks_table_says_what_each_model_runs_as_a_task_and_why():
     assert "idle" not in rows and "main" not in rows
     for component, (bare, rtos, why) in rows.items():
         assert bare == "cooperative task" and rtos == "thread", component
-        assert why == analysis.TASK_REASONS.get(component, "-")
+        expected = (analysis.RATE_GROUP_REASON if component.startswith("rg")
+                    else analysis.TASK_REASONS.get(component, "-"))
+        assert why == expected, component
     # rtos without its rate group's task: passive there
     data.variants["rtos"].records = [r for r in data.variants["rtos"].records
                                      if not (r["kind"] == "CPU" and r.get("name") == "rg1kHz")]
@@ -329,3 +331,14 @@ def test_the_sweep_table_says_how_the_scenario_shaped_its_axis():
     from kittools.report import tables
     assert tables.sweep_table({"baremetal": found}, 12e6, "slice").title.startswith(
         "Load sweep, axis 'slice' (the load's port called each 20,000 µs")
+
+
+def test_the_tasks_table_knows_any_deployments_rate_groups_by_their_records():
+    """tests/team/Thermal's rg50Hz has the passive form the reference's rg1kHz has."""
+    data = results()
+    for variant in data.variants.values():
+        for record in variant.records:
+            if record.get("name") == "rg1kHz":
+                record["name"] = "rg50Hz"
+    rows = {row[0]: row[1:] for row in analysis.tasks_table(data).rows}
+    assert rows["rg50Hz"][-1] == analysis.RATE_GROUP_REASON

@@ -356,15 +356,14 @@ def pair_guidance(data: Results, found: dict[str, sweep.Sweep]) -> list[str]:
 #: what its passive form is: F´ 4.1's and fprime-baremetal's components as the
 #: pinned versions have them (the kit's Kconfig help says the same)
 TASK_REASONS = {
-    "rg1kHz": "a passive form: F´'s PassiveRateGroup (baremetal_passive)",
-    "rg100Hz": "a passive form: F´'s PassiveRateGroup (baremetal_passive)",
-    "rg10Hz": "a passive form: F´'s PassiveRateGroup (baremetal_passive)",
     "cmdDisp": "a passive form: fprime-baremetal's PassiveCmdDispatcher (baremetal_passive)",
     "events": "no passive form: F´'s EventManager is active only",
     "tlmSend": "no passive form: F´'s TlmChan and fprime-baremetal's TlmLinearChan are both active",
     "comQueue": "no passive form: F´'s ComQueue is active only",
     "load": "the kit's background load: a task by design",
 }
+#: ... and of every rate group, whatever the deployment names it (its RG records)
+RATE_GROUP_REASON = "a passive form: F´'s PassiveRateGroup (baremetal_passive)"
 #: CPU records that are not component tasks
 NOT_COMPONENTS = ("idle", "main")
 
@@ -389,5 +388,10 @@ def tasks_table(data: Results) -> Table | None:
         kind = kinds[v][c] or data.variants[v].context_kind() or "task"  # older records: the TASK lines say
         return shown.get(kind, kind)
 
+    rate_groups = {r["name"] for v in names for r in data.variants[v].of_kind("RG")}
+
+    def why(c: str) -> str:
+        return RATE_GROUP_REASON if c in rate_groups else TASK_REASONS.get(c, "-")
+
     return Table("What runs as a task in each model, and why", ["component", *names, "why"],
-                 [[c, *(cell(v, c) for v in names), TASK_REASONS.get(c, "-")] for c in components])
+                 [[c, *(cell(v, c) for v in names), why(c)] for c in components])
