@@ -65,6 +65,11 @@ def test_a_nominal_run_gives_its_verdict_and_the_fastest_rate_groups_latency():
               "KIT RG name=rg1kHz hz=1000 latency_min=107 latency_p50=111 latency_p99=2047 latency_max=2819\n"
               "KIT END variant=rtos result=PASS uptime_ms=2009\n")
     assert ablation.nominal_outcome(passed) == (True, "", {"p50": 111, "max": 2819})
+    # Any deployment's fastest group, by its rate (tests/team/Thermal's 50 Hz)
+    thermal = ("KIT RG name=rg1Hz hz=1 latency_p50=30 latency_max=40\n"
+               "KIT RG name=rg50Hz hz=50 latency_p50=20 latency_max=25\n"
+               "KIT END variant=rtos result=PASS uptime_ms=2009\n")
+    assert ablation.nominal_outcome(thermal) == (True, "", {"p50": 20, "max": 25})
     halted = "KIT HALT reason=stack_overflow code=2 context=main expected=no\nPROJECT EXECUTION FAILED\n"
     assert ablation.nominal_outcome(halted) == (
         False, "HALT reason=stack_overflow code=2 context=main expected=no", {})

@@ -137,3 +137,23 @@ def test_the_size_report_places_a_path_in_zephyrs_groups():
     assert size_report._place(Path("/usr/lib/gcc/x.c/f"), groups) == ("/", "/usr/lib/gcc/x.c/f")
     assert size_report._place(Path(":", "_ZTVN3Kit1AE"), groups) == ("(no paths)", ":/_ZTVN3Kit1AE")
     assert by_layer.classify(":/_ZTVN3Kit1AE", "(no paths)") == by_layer.KIT
+
+
+def test_a_deployments_own_namespace_is_its_layer(tmp_path):
+    """tests/team/Thermal's instances and components (namespace Thermal) are
+    the deployment's, as the reference's (namespace Kit) are; the namespaces
+    come from the build's dictionary, the kit's own module left out."""
+    import json
+
+    instance, component = "_ZN7Thermal6rg50HzE", "_ZTVN7Thermal13HeaterControlE"
+    assert by_layer.classify(instance) == by_layer.UNATTRIBUTED
+    assert by_layer.classify(instance, namespaces=("Thermal",)) == by_layer.KIT
+    assert by_layer.classify(component, namespaces=("Thermal",)) == by_layer.KIT
+    assert by_layer.classify("_ZN8Thermals1xE", namespaces=("Thermal",)) == by_layer.UNATTRIBUTED
+    dictionary = tmp_path / "build-artifacts" / "x" / "dict" / "ThermalTopologyDictionary.json"
+    dictionary.parent.mkdir(parents=True)
+    dictionary.write_text(json.dumps({
+        "commands": [{"name": "Thermal.cmdDisp.CMD_NO_OP", "opcode": 1}, {"name": "Kit.load.SET_SLICE", "opcode": 2}],
+        "telemetryChannels": [{"name": "Thermal.heaters.Duty"}], "events": []}))
+    assert by_layer.deployment_namespaces(tmp_path) == ("Thermal",)
+    assert by_layer.deployment_namespaces(tmp_path / "none") == ()

@@ -47,6 +47,12 @@ class Dictionary:
         return Dictionary(path, opcodes, constants, channels, events)
 
     @property
+    def modules(self) -> frozenset[str]:
+        """The top-level FPP modules of its instances ("Kit", and a
+        deployment's own: "Thermal" in tests/team/Thermal)."""
+        return frozenset(name.split(".", 1)[0] for name in (*self.opcodes, *self.channels, *self.events))
+
+    @property
     def dispatcher(self) -> str:
         """The dispatcher's qualified instance name, e.g. "Kit.cmdDisp";
         KitError where the dictionary has none, or several."""

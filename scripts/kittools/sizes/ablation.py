@@ -91,9 +91,9 @@ COMPILER_KNOBS = (
     Knob("optimization: -Os -> -O2", ("CONFIG_SPEED_OPTIMIZATIONS=y",)),
     Knob("optimization: -Os -> -Og", ("CONFIG_DEBUG_OPTIMIZATIONS=y",)),
 )
-#: The rate group whose dispatch latency each row reports (the fastest: the
-#: first to feel a slower path)
-LATENCY_RG = "rg1kHz"
+#: Each row reports the dispatch latency of the deployment's fastest rate
+#: group (the first to feel a slower path; the highest `hz` of its RG records)
+LATENCY_RG = "the fastest rate group"
 
 
 @dataclass
@@ -177,9 +177,10 @@ def nominal_outcome(text: str) -> tuple[bool, str, dict[str, int]]:
     dispatch latency (p50, max)."""
     records = [r for r in map(console.parse_line, text.splitlines()) if r is not None]
     passed = any(r.kind == "END" and r.fields.get("result") == "PASS" for r in records)
-    latency = {key: int(r.fields[f"latency_{key}"]) for r in records
-               if r.kind == "RG" and r.fields.get("name") == LATENCY_RG
-               for key in ("p50", "max") if f"latency_{key}" in r.fields}
+    groups = [r for r in records if r.kind == "RG" and r.fields.get("hz", "").isdigit()]
+    fastest = max(groups, key=lambda r: int(r.fields["hz"]), default=None)
+    latency = {key: int(fastest.fields[f"latency_{key}"]) for key in ("p50", "max")
+               if fastest is not None and f"latency_{key}" in fastest.fields}
     note = "" if passed else "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
                                        for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
     return passed, note, latency
@@ -201,8 +202,9 @@ def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path,
     elif row.built:
         footprint = measure(build_dir)
         row.rom, row.ram = footprint.rom, footprint.ram
-        row.rom_layers = by_layer.breakdown(by_layer.report(build_dir, "rom"))
-        row.ram_layers = by_layer.breakdown(by_layer.report(build_dir, "ram"))
+        own = by_layer.deployment_namespaces(build_dir)
+        row.rom_layers = by_layer.breakdown(by_layer.report(build_dir, "rom"), own)
+        row.ram_layers = by_layer.breakdown(by_layer.report(build_dir, "ram"), own)
         try:
             text = runner.run(build_dir, out_dir / f"{slug}.run.log")
         except KitError as error:  # no end line in time

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from kittools.build.folder import BuildFolder
+from kittools.link.dictionary import Dictionary
 from kittools.sizes import size_report
 from kittools.workspace import KitError, environment
 
@@ -168,9 +169,25 @@ def _make_reports(build_dir: Path, elf: Path, niceness: int = 0) -> None:
 _GROUP_PREFIX = {"ZEPHYR_BASE": "/deps/zephyr/", "OUTPUT_DIR": "/OUTPUT_DIR/", "WORKSPACE": "/"}
 
 
-def classify(identifier: str, group: str = "") -> str:
+#: The kit's FPP module: its instruments, its ground link, and the reference deployment
+KIT_MODULE = "Kit"
+
+
+def deployment_namespaces(build_dir: Path) -> tuple[str, ...]:
+    """The C++ namespaces of a build's deployment beyond the kit's (its own
+    FPP modules: tests/team/Thermal's Thermal), from its dictionary; none
+    where the build has no dictionary."""
+    try:
+        return tuple(sorted(Dictionary.read(BuildFolder(build_dir).dictionary()).modules - {KIT_MODULE}))
+    except KitError:
+        return ()
+
+
+def classify(identifier: str, group: str = "", namespaces: tuple[str, ...] = ()) -> str:
     """Category of one leaf of a rom/ram report (its 'identifier', within
-    the top-level group named `group`)."""
+    the top-level group named `group`); a symbol of one of the deployment's
+    `namespaces` (deployment_namespaces) is the deployment's, as the
+    reference's (namespace Kit) is."""
     path = _GROUP_PREFIX.get(group, "") + identifier.replace("\\", "/")
     for needle, category in _BY_PATH:
         if needle in path:
@@ -184,6 +201,8 @@ def classify(identifier: str, group: str = "") -> str:
         for names, category in _SVC_CLASS_LAYERS:
             if any(f"{len(name)}{name}" in symbol for name in names):
                 return category
+    if any(symbol.startswith((f"_ZN{len(ns)}{ns}", f"_ZTVN{len(ns)}{ns}")) for ns in namespaces):
+        return KIT
     for prefix, category in _BY_SYMBOL:
         if symbol.startswith(prefix):
             return category
@@ -199,12 +218,14 @@ def _leaves(node: dict) -> Iterator[dict]:
         yield from _leaves(child)
 
 
-def breakdown(report: dict) -> dict[str, int]:
-    """Bytes per category; sums to the report's total_size."""
+def breakdown(report: dict, namespaces: tuple[str, ...] = ()) -> dict[str, int]:
+    """Bytes per category; sums to the report's total_size. `namespaces`:
+    the deployment's own (deployment_namespaces)."""
     sizes = {name: 0 for name in CATEGORIES}
     for group in report["symbols"].get("children", []):
         for leaf in _leaves(group):
-            sizes[classify(str(leaf.get("identifier", "")), str(group.get("name", "")))] += int(leaf.get("size", 0))
+            category = classify(str(leaf.get("identifier", "")), str(group.get("name", "")), namespaces)
+            sizes[category] += int(leaf.get("size", 0))
     return sizes
 
 
