@@ -310,7 +310,7 @@ def table(rows: list[Row], board: str, model: str, profile: str, toward: str) ->
                      latency.get("p50", ""), latency.get("max", ""), "; ".join(moved), verdict])
     return Table(f"Knobs on {board}, {model}: from {profile}, one knob at a time toward {toward} (bytes; "
                  f"{LATENCY_RG}'s dispatch latency in cycles, nominal run)",
-                 ["knob", "ROM", "ΔROM", "RAM", "ΔRAM", f"{LATENCY_RG} latency p50", f"{LATENCY_RG} latency max",
+                 ["knob", "ROM", "ΔROM", "RAM", "ΔRAM", "fastest group's latency p50", "fastest group's latency max",
                   "layers moved most (ROM / RAM)", "nominal run"], body)
 
 
