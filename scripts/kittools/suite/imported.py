@@ -5,13 +5,14 @@ repository and its own F´ project, the kit a project of its manifest whose
 upstreams land in the kit's deps/ (`path: .`, `import: path-prefix:`), and
 `west kit ...` runs in that workspace.
 
-CI makes one in a scratch folder outside the clone: the kit is this clone
-(a link to it: west update finds every pin checked out and fetches
-nothing), the team's repository a copy of an F´ project of tests/."""
+CI makes one in a scratch folder outside the clone (SCRATCH): the kit is
+this clone (a link to it: west update finds every pin checked out and
+fetches nothing), the team's repository a copy of an F´ project of tests/."""
 
 from __future__ import annotations
 
 import contextlib
+import fcntl
 import shutil
 import subprocess
 import sys
@@ -69,6 +70,28 @@ def _git(args: list[str]) -> subprocess.CompletedProcess[str]:
     return subprocess.run(["git", "-C", str(KIT_ROOT), *args], capture_output=True, text=True, check=False)
 
 
+#: The scratch workspace's folder, the same for every clone on a machine: its
+#: path is on the deployment's compile lines, and ccache, which keys on them,
+#: then serves the next clone's run what this one compiled (a fresh folder
+#: each time cost the second deployment about 40 s of CI's run)
+SCRATCH = Path(tempfile.gettempdir()) / "kit-import"
+
+
+@contextlib.contextmanager
+def _scratch() -> Iterator[Path]:
+    """SCRATCH, emptied, for one run at a time on this machine (the kernel's
+    lock, which goes with the process however it ends), removed after."""
+    lock_path = SCRATCH.with_name(SCRATCH.name + ".lock")
+    with lock_path.open("a+") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)  # another clone's run: wait for it
+        shutil.rmtree(SCRATCH, ignore_errors=True)
+        SCRATCH.mkdir(parents=True)
+        try:
+            yield SCRATCH
+        finally:
+            shutil.rmtree(SCRATCH, ignore_errors=True)
+
+
 @contextlib.contextmanager
 def importing_workspace(project: Path, log_dir: Path) -> Iterator[Path]:
     """A west workspace outside the clone whose manifest repository, a copy
@@ -81,8 +104,7 @@ def importing_workspace(project: Path, log_dir: Path) -> Iterator[Path]:
         raise KitError(f"the kit at {KIT_ROOT} is not a git clone: a west manifest cannot import it")
     had_manifest_rev = _git(["rev-parse", "--verify", "--quiet", MANIFEST_REV]).returncode == 0
     branch = _git(["symbolic-ref", "-q", "HEAD"]).stdout.strip()
-    with tempfile.TemporaryDirectory(prefix="kit-import-") as scratch:
-        top = Path(scratch)
+    with _scratch() as top:
         team = top / TEAM_FOLDER
         shutil.copytree(project, team)
         (top / KIT_FOLDER).symlink_to(KIT_ROOT, target_is_directory=True)
