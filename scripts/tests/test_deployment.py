@@ -276,3 +276,27 @@ def test_the_reference_and_the_second_deployment_have_a_table_for_every_board():
     boards = workspace.ported_boards()
     assert deployment.resolve(None, boards).is_reference
     assert deployment.resolve(KIT_ROOT / "tests" / "team" / "Thermal", boards).name == "tests/team/Thermal"
+
+
+def test_a_build_folder_configured_for_another_deployment_is_configured_from_scratch(tmp_path: Path):
+    """Two deployment folders of one name share deployment-<name>/: the
+    cached CONF_FILE of the first would name its deployment.conf."""
+    from kittools.suite import twister
+
+    def configured(name: str, deployment_dir: Path | None) -> Path:
+        build = tmp_path / name
+        build.mkdir()
+        entry = f"KIT_DEPLOYMENT_DIR:PATH={deployment_dir}\n" if deployment_dir else ""
+        (build / "CMakeCache.txt").write_text(entry + "BOARD:STRING=qemu_cortex_m3\n")
+        return build / "CMakeCache.txt"
+
+    old, same = configured("a", tmp_path / "x" / "Thermal"), configured("b", tmp_path / "y" / "Thermal")
+    floor = configured("floor", None)
+    wanted = f"-x=KIT_DEPLOYMENT_DIR={tmp_path / 'y' / 'Thermal'}"
+    twister.forget_other_deployments(tmp_path, ["west", "twister", wanted])
+    assert not old.exists() and same.exists() and floor.exists()
+    twister.forget_other_deployments(tmp_path, ["west", "twister"])  # the reference's run
+    assert not same.exists() and floor.exists()
+    reference = configured("c", KIT_ROOT / "app")
+    twister.forget_other_deployments(tmp_path, ["west", "twister"])
+    assert reference.exists()

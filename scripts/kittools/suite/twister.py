@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from kittools.build.folder import CONSOLE_LOG, BuildFolder, kit_kconfig_digest
+from kittools.deployment import CACHE_ENTRY, REFERENCE
 from kittools.log import LOG, say
 from kittools.sizes import memory
 from kittools.suite import fit, floor, results
@@ -204,6 +205,21 @@ def configured_from() -> str:
     return digest.hexdigest()
 
 
+def forget_other_deployments(out_dir: Path, command: list[str]) -> None:
+    """A build folder configured for another deployment than the command's
+    (its -x=KIT_DEPLOYMENT_DIR, or the reference's) is configured from
+    scratch: its CMake cache keeps the Kconfig fragments of that deployment
+    (CONF_FILE: its deployment.conf), which a reconfigure does not replace.
+    Two deployment folders of one name share an output folder
+    (deployment-<name>)."""
+    prefix = f"-x={CACHE_ENTRY}="
+    wanted = next((arg.removeprefix(prefix) for arg in command if arg.startswith(prefix)), str(REFERENCE))
+    for build in BuildFolder.configured_under(out_dir):
+        built_for = build.cache_value(CACHE_ENTRY)
+        if built_for is not None and Path(built_for) != Path(wanted):
+            build.cmake_cache.unlink(missing_ok=True)
+
+
 def play(command: list[str], log: Path, out_dir: Path) -> Tally:
     """Run a twister command that plays the suite into `out_dir`, a line
     per finished configuration and per scenario played; its tally."""
@@ -223,6 +239,7 @@ def play(command: list[str], log: Path, out_dir: Path) -> Tally:
         # defaults as they are now, not from its last .config (configured_from)
         for build in BuildFolder.configured_under(out_dir):
             build.config.unlink(missing_ok=True)
+        forget_other_deployments(out_dir, command)
         # The Kconfig file twister wrote for an earlier suite's extra_configs:
         # twister hands any it finds to CMake, whatever the suite says now
         # (the kit's suites set Kconfig through extra_args: testcase.yaml).
