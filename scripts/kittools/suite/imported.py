@@ -21,8 +21,8 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from kittools.log import LOG
-from kittools.suite.counts import Tally
-from kittools.workspace import KIT_ROOT, KitError, environment
+from kittools.suite.counts import Tally, run_logged
+from kittools.workspace import KIT_ROOT, KitError
 
 #: The kit's folder in the importing workspace, beside the team's repository
 KIT_FOLDER = "kit"
@@ -53,12 +53,7 @@ def _run_west(args: list[str], cwd: Path, log: Path) -> int:
     """west in the importing workspace, found from `cwd` as a user's west
     finds it: without the ZEPHYR_BASE the kit's own runs set, which would
     point west at the clone's own workspace instead."""
-    env = environment()
-    env.pop("ZEPHYR_BASE", None)
-    log.parent.mkdir(parents=True, exist_ok=True)
-    with log.open("w") as out:
-        return subprocess.run([sys.executable, "-m", "west", *args], cwd=cwd, env=env, stdout=out,
-                              stderr=subprocess.STDOUT, check=False).returncode
+    return run_logged([sys.executable, "-m", "west", *args], log, cwd=cwd, unset=("ZEPHYR_BASE",))
 
 
 def _west(args: list[str], cwd: Path, log: Path) -> None:
