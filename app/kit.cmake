@@ -112,6 +112,14 @@ else()
     set(KIT_SUB_BUILD OFF)
     find_package(Zephyr REQUIRED HINTS "${KIT_DEPS}/zephyr")
 endif()
+# A deployment that imports F´'s CdhCore needs F´'s text loggers (its
+# deployment.conf says so: CONFIG_KIT_FPRIME_TEXT_LOGGERS); F´ reads the
+# setting when its modules are set up, below
+if(CONFIG_KIT_FPRIME_TEXT_LOGGERS)
+    set(FPRIME_ENABLE_TEXT_LOGGERS ON CACHE BOOL "no text logging on a 64 KiB target" FORCE)
+else()
+    set(FPRIME_ENABLE_TEXT_LOGGERS OFF CACHE BOOL "no text logging on a 64 KiB target" FORCE)
+endif()
 
 # After the application's literal project() call
 macro(kit_deployment)

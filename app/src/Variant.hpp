@@ -13,13 +13,22 @@
 #define KIT_VARIANT_HPP
 
 #include <Fw/FPrimeBasicTypes.hpp>
+// After F´'s headers: Zephyr's define names (EMPTY) that F´'s enums use
+#include <zephyr/autoconf.h>
 
 namespace Kit {
 namespace Variant {
 
 //! The most execution contexts (threads, cooperative tasks, idle) a model
-//! reports: the topology's active instances plus the kernel's own
+//! reports: the topology's active instances plus the kernel's own (4: the
+//! main thread, idle, and room for the kernel's work queues); the kit's
+//! services have at most 12, a deployment that gives its count
+//! (CONFIG_KIT_DEPLOYMENT_TASKS) its own
+#if defined(CONFIG_KIT_DEPLOYMENT_OWN_TASKS)
+constexpr U32 MAX_CONTEXTS = CONFIG_KIT_DEPLOYMENT_TASKS + 4;
+#else
 constexpr U32 MAX_CONTEXTS = 16;
+#endif
 
 //! What a model's execution contexts are, for the record ("context=")
 enum class ContextKind : U8 {

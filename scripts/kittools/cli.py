@@ -10,6 +10,7 @@
   kit footprint what each F´ knob costs: one build per knob from a footprint profile, ROM/RAM by layer, nominal run
   kit sizing    a build's fixed tables against its dictionary and run, and what its ports cost
   kit new-board scaffold a new board's folder (checks Zephyr knows it and that the deployment fits)
+  kit new-deployment  give a deployment made by fprime-util new --deployment the kit's seam
 """
 
 
@@ -21,7 +22,18 @@ from pathlib import Path
 
 from kittools import variants
 from kittools.boards.scaffold import REFERENCE_BOARD
-from kittools.commands import compare, footprint, gds, new_board, report, serial_sweep, sizediff, sizing, test
+from kittools.commands import (
+    compare,
+    footprint,
+    gds,
+    new_board,
+    new_deployment,
+    report,
+    serial_sweep,
+    sizediff,
+    sizing,
+    test,
+)
 from kittools.sizes import symbols
 from kittools.suite import budget
 from kittools.workspace import KIT_ROOT, KitError
@@ -138,6 +150,13 @@ def parser() -> argparse.ArgumentParser:
                    help=f"ported board to copy the folder and the measured footprint of (default: {REFERENCE_BOARD})")
     n.add_argument("--force", action="store_true", help="write the board's folder again if it exists")
     n.set_defaults(func=new_board.run)
+    e = sub.add_parser("new-deployment", help="give a deployment folder made by fprime-util new --deployment the "
+                                              "kit's seam, replacing its host timer, link and clock")
+    e.add_argument("folder", metavar="DIR", help="the deployment folder (inside its F´ project)")
+    e.add_argument("--fastest-hz", metavar="HZ",
+                   help="the fastest rate group's rate on the board; the others keep the template's ratios to it "
+                        "(default: the template's rates, where F´'s rate group driver holds them at the kit's tick)")
+    e.set_defaults(func=new_deployment.run)
     for command in (r, t):
         command.add_argument("--rom-budget", type=float, default=budget.Budget.rom_pct, help="allowed ROM growth, %%")
         command.add_argument("--ram-budget", type=float, default=budget.Budget.ram_pct, help="allowed RAM growth, %%")

@@ -161,15 +161,19 @@ def _lanes(monkeypatch, argv: list[str]) -> tuple[list[str], list[str]]:
     return seen["qemu"], seen["host"]
 
 
-def test_the_porting_step_ends_the_host_lane_of_a_full_run(monkeypatch, tmp_path):
+def test_the_porting_and_new_deployment_steps_end_the_host_lane_of_a_full_run(monkeypatch, tmp_path):
     """Beside the suite's twister, done before the ground link starts."""
     out = ["--output", str(tmp_path)]
     qemu, host = _lanes(monkeypatch, [*out])
-    assert host[-1].startswith("porting: a new QEMU board and a console-only real board scaffolded into a scratch")
-    assert not any(name.startswith("porting:") for name in qemu)
+    assert host[-2].startswith("porting: a new QEMU board and a console-only real board scaffolded into a scratch")
+    assert host[-1].startswith("new deployment: fprime-util new --deployment, kit new-deployment")
+    assert not any(name.startswith(("porting:", "new deployment:")) for name in qemu)
     for argv in (["--skip-porting"], ["--skip-twister"], ["--board", "qemu_cortex_m3"]):
         qemu, host = _lanes(monkeypatch, [*out, *argv])
         assert not any(name.startswith("porting:") for name in qemu + host), argv
+    for argv in (["--skip-twister"], ["--board", "qemu_cortex_m3"]):
+        qemu, host = _lanes(monkeypatch, [*out, *argv])
+        assert not any(name.startswith("new deployment:") for name in qemu + host), argv
 
 
 def test_a_deployments_own_run_is_its_whole_run_on_each_board_and_nothing_else(monkeypatch, tmp_path):

@@ -23,9 +23,15 @@ PLACEHOLDERS = {"<folder>": "tests/team/Thermal", "<project>/MyDeployment": "tes
 FENCE = re.compile(r"^```[a-z]*\n(.*?)^```", re.MULTILINE | re.DOTALL)
 
 
+#: The walk from fprime-util's template (its own test below): a deployment CI makes in a scratch project
+WALK = "fprime-util new --deployment"
+
+
 def _commands(prefix: str) -> list[list[str]]:
     found = []
     for block in FENCE.findall(PAGE.read_text()):
+        if WALK in block:
+            continue
         for line in block.splitlines():
             for placeholder, value in PLACEHOLDERS.items():
                 line = line.replace(placeholder, value)
@@ -97,3 +103,17 @@ def test_the_importing_manifest_on_the_page_is_the_one_ci_makes():
     (kit,) = shown["projects"]
     keys = ("name", "path", "import")
     assert {k: kit[k] for k in keys} == {k: made["projects"][0][k] for k in keys}
+
+
+def test_the_walk_from_fprime_utils_template_is_the_one_ci_runs():
+    """The page's walk: fprime-util's wizard, then the kit's commands CI's
+    new-deployment step runs (kittools.suite.template_deployment)."""
+    from kittools.suite import template_deployment
+
+    (block,) = [block for block in FENCE.findall(PAGE.read_text()) if WALK in block]
+    lines = [shlex.split(line.split("#", 1)[0]) for line in block.splitlines() if line.strip()]
+    assert lines[0] == WALK.split()
+    assert all(words[0] == "scripts/kit" for words in lines[1:])
+    assert [words[1:] for words in lines[1:]] == list(template_deployment.walk(template_deployment.DEPLOYMENT).values())
+    for words in lines[1:]:
+        cli.parser().parse_args(words[1:])

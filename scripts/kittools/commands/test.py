@@ -29,6 +29,7 @@ from kittools.suite import (
     results,
     shards,
     style,
+    template_deployment,
     twister,
     verdict,
 )
@@ -253,6 +254,14 @@ class FullRun:
             steps.add_host(f"porting: a new QEMU board and a console-only real board scaffolded into a scratch "
                            f"copy ({', '.join(porting.PORTING_MODELS)})",
                            functools.partial(porting.run_porting_check, self.log_dir, args.full))
+        # A deployment as F´'s tools make one, through kit new-deployment: in
+        # the same lane, after the porting check (both end before the ground
+        # link's checks start, which wait for this lane)
+        if not args.skip_twister and not args.board and last:
+            steps.add_host(f"new deployment: fprime-util new --deployment, kit new-deployment, kit compare on "
+                           f"{template_deployment.BOARD} (every model), the fit on "
+                           f"{template_deployment.SMALL_BOARD}",
+                           functools.partial(template_deployment.run, self.log_dir))
         return steps
 
 

@@ -25,12 +25,15 @@ class Tally:
         self.failed += other.failed
 
 
-def run_logged(command: list[str], log: Path, cwd: Path = KIT_ROOT, unset: tuple[str, ...] = ()) -> int:
-    """`command` in the kit's environment (without the variables `unset`), its output to `log`; its exit code."""
+def run_logged(command: list[str], log: Path, cwd: Path = KIT_ROOT, unset: tuple[str, ...] = (),
+               stdin: str = "") -> int:
+    """`command` in the kit's environment (without the variables `unset`),
+    `stdin` its input, its output to `log`; its exit code."""
     env = {name: value for name, value in environment().items() if name not in unset}
     log.parent.mkdir(parents=True, exist_ok=True)
     with log.open("w") as out:
-        return subprocess.run(command, cwd=cwd, env=env, stdout=out, stderr=subprocess.STDOUT).returncode
+        return subprocess.run(command, cwd=cwd, env=env, input=stdin, text=True, stdout=out,
+                              stderr=subprocess.STDOUT).returncode
 
 
 def _built_only(suite: dict[str, Any]) -> bool:

@@ -73,18 +73,19 @@ SCRATCH = Path(tempfile.gettempdir()) / "kit-import"
 
 
 @contextlib.contextmanager
-def _scratch() -> Iterator[Path]:
-    """SCRATCH, emptied, for one run at a time on this machine (the kernel's
-    lock, which goes with the process however it ends), removed after."""
-    lock_path = SCRATCH.with_name(SCRATCH.name + ".lock")
+def scratch(folder: Path) -> Iterator[Path]:
+    """A scratch folder of the machine's (SCRATCH, ...), emptied, for one run
+    at a time on this machine (the kernel's lock, which goes with the process
+    however it ends), removed after."""
+    lock_path = folder.with_name(folder.name + ".lock")
     with lock_path.open("a+") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)  # another clone's run: wait for it
-        shutil.rmtree(SCRATCH, ignore_errors=True)
-        SCRATCH.mkdir(parents=True)
+        shutil.rmtree(folder, ignore_errors=True)
+        folder.mkdir(parents=True)
         try:
-            yield SCRATCH
+            yield folder
         finally:
-            shutil.rmtree(SCRATCH, ignore_errors=True)
+            shutil.rmtree(folder, ignore_errors=True)
 
 
 @contextlib.contextmanager
@@ -99,7 +100,7 @@ def importing_workspace(project: Path, log_dir: Path) -> Iterator[Path]:
         raise KitError(f"the kit at {KIT_ROOT} is not a git clone: a west manifest cannot import it")
     had_manifest_rev = _git(["rev-parse", "--verify", "--quiet", MANIFEST_REV]).returncode == 0
     branch = _git(["symbolic-ref", "-q", "HEAD"]).stdout.strip()
-    with _scratch() as top:
+    with scratch(SCRATCH) as top:
         team = top / TEAM_FOLDER
         shutil.copytree(project, team)
         (top / KIT_FOLDER).symlink_to(KIT_ROOT, target_is_directory=True)
