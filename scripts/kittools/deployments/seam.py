@@ -19,6 +19,12 @@ KIT_STACK = 2048
 #: The kit's own tasks' entries (app/Subtopologies/: the load, the downlink's
 #: queue), as tests/team/Thermal has them
 KIT_QUEUES = {"load": "10", "comQueue": "12"}
+#: The event service's queue (F´'s CdhCore: 10): it takes health's pings,
+#: and F´ asserts when one finds it full. fprime-util's template, adapted,
+#: peaked at 11 under the kit's load sweep in rtos on mps2/an385 (depth 32,
+#: KIT QUEUE name=events high_water=11); at F´'s 10 the sweep's first
+#: point asserted (EventManager's pingIn)
+EVENTS_QUEUE = 16
 #: A rate group's queue: one pending cycle, a second is a slip (the kit
 #: counts it: the run's KIT QUEUE high_water)
 RATE_GROUP_QUEUE = 2
@@ -139,11 +145,16 @@ def config_overrides(result: Plan, fprime_subtopologies: Path) -> dict[str, str]
                     new_priorities[instance] = str(KIT_PRIORITIES[role])
                 else:
                     new_priorities[instance] = str(OTHER_TASKS_PRIORITY)
+            queues = {instance: str(EVENTS_QUEUE) for instance, depth in fpp.constants(text, "QueueSizes").items()
+                      if roles.get(f"{name}.{instance}") == "event" and depth.isdigit() and int(depth) < EVENTS_QUEUE}
+            text = fpp.set_constants(text, "QueueSizes", queues)
             text = fpp.set_constants(text, "StackSizes", {instance: str(KIT_STACK) for instance in stacks})
             text = fpp.set_constants(text, "Priorities", new_priorities)
+            events = (f"# The event service's queue holds {EVENTS_QUEUE}: health's pings must find room.\n"
+                      if queues else "")
             header = (f"# F´'s {path.name} (Svc/Subtopologies/{name}) with the kit's stacks and priorities: a\n"
                       f"# {KIT_STACK} B thread pool slot each, and F´ priorities on the kit's scale\n"
-                      "# (docs/your-deployment.md). Written by kit new-deployment; yours to change.\n")
+                      f"{events}# (docs/your-deployment.md). Written by kit new-deployment; yours to change.\n")
             files[path.name] = header + text
     return files
 
