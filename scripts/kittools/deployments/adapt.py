@@ -107,8 +107,15 @@ def adapt_topology(text: str, deployment: Deployment, plan: seam.Plan, removed: 
     for name in groups:
         members[name].sort(key=lambda member: int(member[0]) if member[0].isdigit() else 0)
         plan.members[name] = [target for _, target in members[name]]
-    for line in lines:
-        stripped = line.strip()
+    # The kit's scripted uplink goes after the topology's pattern specifiers
+    # (the dispatcher is the command pattern's)
+    patterns = [number for number, line in enumerate(lines)
+                if re.match(r"^\s*(command|event|telemetry|health|param|time)\s+connections\s+instance\b", line)]
+    last_pattern = patterns[-1] if "command" in deployment.patterns and patterns else -1
+    if last_pattern < 0 and "Kit.uplink.cmdOut" not in text:
+        record.todo.append("Top/topology.fpp names no command dispatcher (`command connections instance`): connect "
+                           "Kit.uplink.cmdOut and cmdResponseIn to its seqCmdBuff and seqCmdStatus")
+    for number, line in enumerate(lines):
         imported = re.match(r"^(\s*)import\s+([\w.]+)", line)
         if imported and COMM.match(imported.group(2) + "."):
             out.append(f"{imported.group(1)}# The kit's ground link (F´ framing, on the board's link UART) in place "
@@ -154,7 +161,7 @@ def adapt_topology(text: str, deployment: Deployment, plan: seam.Plan, removed: 
                     out.append(f"{indent}{driven}.RateGroupMemberOut[{port}] -> {member}")
             continue
         out.append(line)
-        if stripped.startswith("command connections instance") and "Kit.uplink.cmdOut" not in text:
+        if number == last_pattern and "Kit.uplink.cmdOut" not in text:
             indent = re.match(r"^(\s*)", line).group(1)  # type: ignore[union-attr]
             out.extend([
                 "",
