@@ -88,7 +88,6 @@ endif()
 if(NOT DEFINED CMAKE_TOOLCHAIN_FILE)
     set(CMAKE_TOOLCHAIN_FILE "${FPRIME_ZEPHYR_PATH}/cmake/toolchain/zephyr.cmake")
 endif()
-set(FPRIME_ENABLE_TEXT_LOGGERS OFF CACHE BOOL "no text logging on a 64 KiB target")
 list(APPEND ZEPHYR_EXTRA_MODULES
     "${KIT_ROOT}/modules/fprime" "${KIT_ROOT}/modules/fprime-zephyr" "${KIT_ROOT}/modules/fprime-baremetal"
     "${KIT_ROOT}/modules/qemu")
@@ -112,14 +111,16 @@ else()
     set(KIT_SUB_BUILD OFF)
     find_package(Zephyr REQUIRED HINTS "${KIT_DEPS}/zephyr")
 endif()
-# A deployment that imports F´'s CdhCore needs F´'s text loggers (its
-# deployment.conf says so: CONFIG_KIT_FPRIME_TEXT_LOGGERS); F´ reads the
-# setting when its modules are set up, below
+# F´'s text loggers: none on a 64 KiB target, unless the deployment imports
+# F´'s CdhCore, which F´ builds only with them (its deployment.conf says so:
+# CONFIG_KIT_FPRIME_TEXT_LOGGERS). F´ reads the setting when its modules are
+# set up (kit_deployment, below), after Kconfig.
 if(CONFIG_KIT_FPRIME_TEXT_LOGGERS)
-    set(FPRIME_ENABLE_TEXT_LOGGERS ON CACHE BOOL "no text logging on a 64 KiB target" FORCE)
+    set(KIT_TEXT_LOGGERS ON)
 else()
-    set(FPRIME_ENABLE_TEXT_LOGGERS OFF CACHE BOOL "no text logging on a 64 KiB target" FORCE)
+    set(KIT_TEXT_LOGGERS OFF)
 endif()
+set(FPRIME_ENABLE_TEXT_LOGGERS ${KIT_TEXT_LOGGERS} CACHE BOOL "F´'s text loggers (CONFIG_KIT_FPRIME_TEXT_LOGGERS)" FORCE)
 
 # After the application's literal project() call
 macro(kit_deployment)
