@@ -146,19 +146,24 @@ def test_kit_report_needs_no_workspace(tmp_path, board):
     assert {p.name for p in tmp_path.iterdir()} >= {"report.md", "report.html", "report.json", "report.csv"}
 
 
-def _lanes(monkeypatch, argv: list[str]) -> tuple[list[str], list[str]]:
-    """The step names `kit test argv` would run in its QEMU and host lanes (nothing runs)."""
-    seen: dict[str, list[str]] = {}
+def _plan(monkeypatch, argv: list[str]) -> plan.Plan:
+    """The plan `kit test argv` would run (nothing runs)."""
+    seen: list[plan.Plan] = []
 
     def run(steps: plan.Plan) -> int:
-        seen["qemu"] = [step.name for step in steps.qemu]
-        seen["host"] = [step.name for step in steps.host]
+        seen.append(steps)
         return 0
 
     monkeypatch.setattr(plan.Plan, "run", run)
     monkeypatch.setattr(test_command, "check_provisioned", lambda: None)
     assert cli.main(["test", *argv]) == 0
-    return seen["qemu"], seen["host"]
+    return seen[0]
+
+
+def _lanes(monkeypatch, argv: list[str]) -> tuple[list[str], list[str]]:
+    """The step names `kit test argv` would run in its QEMU and host lanes (nothing runs)."""
+    steps = _plan(monkeypatch, argv)
+    return [step.name for step in steps.qemu], [step.name for step in steps.host]
 
 
 def test_the_porting_and_new_deployment_steps_end_the_host_lane_of_a_full_run(monkeypatch, tmp_path):
@@ -190,11 +195,19 @@ def test_a_deployments_own_run_is_its_whole_run_on_each_board_and_nothing_else(m
     assert [name.split(": ")[0].rsplit(" ", 1)[-1] for name in qemu] == ["qemu_cortex_m3", "mps2/an385"]
 
 
-def test_a_full_run_ends_with_the_second_deployments_whole_run(monkeypatch, tmp_path):
-    qemu, _ = _lanes(monkeypatch, ["--output", str(tmp_path)])
-    assert qemu[-1].startswith("second deployment: tests/team/Thermal through the seam, from a repository whose "
-                               "west.yml imports the kit, every model on qemu_cortex_m3: nominal, load, faults, "
-                               "ground link, report, west kit")
+def test_a_full_run_has_the_second_deployments_whole_run_after_the_ground_link_beside_the_reports(
+        monkeypatch, tmp_path):
+    """It starts once the ground link's checks have ended (both have host
+    time-outs) and runs beside the budgets and reports."""
+    plan = _plan(monkeypatch, ["--output", str(tmp_path)])
+    names = [step.name for step in plan.qemu]
+    second = next(i for i, name in enumerate(names) if name.startswith("second deployment: "))
+    assert names[second].startswith("second deployment: tests/team/Thermal through the seam, from a repository "
+                                    "whose west.yml imports the kit, every model on qemu_cortex_m3: nominal, load, "
+                                    "faults, ground link, report, west kit")
+    assert names[second - 1].startswith("ground link: ")
+    assert plan.qemu[second].beside and not any(step.beside for step in plan.qemu[:second] + plan.qemu[second + 1:])
+    assert names[second + 1].startswith("budget: ")
 
 
 @pytest.mark.parametrize("arguments, message", [

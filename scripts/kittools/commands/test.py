@@ -204,6 +204,14 @@ class FullRun:
                 # Before the budget: the board's report takes the serial-load sweep from it
                 steps.add_qemu("ground link: integration suite through fprime-gds, fuzzing, serial-load sweep",
                                self.ground)
+            if REFERENCE_BOARD in boards and last_share(subset):
+                # Beside the budgets and reports, which read what is done and
+                # leave the second core idle; after the ground link's checks,
+                # whose time-outs are the host's, as are its own
+                steps.add_qemu(f"second deployment: {deployment.label(SECOND_DEPLOYMENT)} through the seam, from a "
+                               f"repository whose west.yml imports the kit, every model on {REFERENCE_BOARD}: "
+                               f"{', '.join(deployment_run.SCENARIOS)}, ground link, report, west kit",
+                               self.second_deployment, beside=True)
             for board in boards:
                 if subset:  # judged once the shards are joined (kit report --merge)
                     steps.add_qemu(f"shard: {board}, this share's part", functools.partial(self.shard, board, False))
@@ -226,11 +234,6 @@ class FullRun:
             if not subset:
                 steps.add_qemu("report: every board side by side (what fits where)", functools.partial(
                     verdict.report_side_by_side, boards + self.small + self.built_only, self.log_dir))
-            if REFERENCE_BOARD in boards and last_share(subset):
-                steps.add_qemu(f"second deployment: {deployment.label(SECOND_DEPLOYMENT)} through the seam, from a "
-                               f"repository whose west.yml imports the kit, every model on {REFERENCE_BOARD}: "
-                               f"{', '.join(deployment_run.SCENARIOS)}, ground link, report, west kit",
-                               self.second_deployment)
         # A split run shares out the steps beside twister: the porting check (the
         # longest) to the first shard, the host's and the device path to the
         # last (measured on two shares of today's suite: the porting check took

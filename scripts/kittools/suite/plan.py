@@ -23,6 +23,9 @@ from kittools.workspace import one_at_a_time
 class Step:
     name: str
     run: Callable[[], Tally]
+    #: Started, not waited for: the lane goes on with its next steps and
+    #: joins this one at its end
+    beside: bool = False
 
 
 @dataclass
@@ -32,8 +35,8 @@ class Plan:
     #: Set once the host lane has ended
     host_done: threading.Event = field(default_factory=threading.Event)
 
-    def add_qemu(self, name: str, run: Callable[[], Tally]) -> None:
-        self.qemu.append(Step(name, run))
+    def add_qemu(self, name: str, run: Callable[[], Tally], beside: bool = False) -> None:
+        self.qemu.append(Step(name, run, beside))
 
     def add_host(self, name: str, run: Callable[[], Tally]) -> None:
         self.host.append(Step(name, run))
@@ -52,15 +55,28 @@ class Plan:
 
 
 def run_steps(steps: list[Step]) -> Tally:
-    """Run steps in order, a line as each starts and ends; their added count."""
+    """Run steps in order, a line as each starts and ends; their added count.
+    A step `beside` the next ones starts in a thread of its own when its
+    turn comes, and is joined at the end."""
     total = Tally()
-    for step in steps:
-        say(f"{step.name} ...")
-        started = time.monotonic()
-        tally = step.run()
-        say(f"{step.name}: {tally.passed} passed, {tally.failed} failed ({time.monotonic() - started:.0f} s)")
-        total.add(tally)
+    with concurrent.futures.ThreadPoolExecutor() as besides:
+        started_beside = []
+        for step in steps:
+            if step.beside:
+                started_beside.append(besides.submit(run_step, step))
+            else:
+                total.add(run_step(step))
+        for future in started_beside:
+            total.add(future.result())
     return total
+
+
+def run_step(step: Step) -> Tally:
+    say(f"{step.name} ...{' (beside the next steps)' if step.beside else ''}")
+    started = time.monotonic()
+    tally = step.run()
+    say(f"{step.name}: {tally.passed} passed, {tally.failed} failed ({time.monotonic() - started:.0f} s)")
+    return tally
 
 
 def settle(future: concurrent.futures.Future[None], job: Callable[[], None]) -> None:

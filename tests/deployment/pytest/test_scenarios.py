@@ -28,7 +28,7 @@ SELECT = re.compile(r"^KIT SELECT scenarios=")
 RUNS = "kit-runs"
 
 # Seconds of host time a scenario may take; the soak, this much more per
-# virtual minute (CONFIG_KIT_SOAK_MINUTES). A baremetal model never idles,
+# virtual minute (CONFIG_KIT_SOAK_CHECKPOINTS of CONFIG_KIT_SOAK_CHECKPOINT_SECONDS). A baremetal model never idles,
 # so icount skips no time and every virtual second is emulated whole: on
 # 2026-12-05 qemu_cortex_m3 baremetal_passive's two-minute soak took 288 s
 # beside one other QEMU, and ran past 420 s with a second build and the
@@ -145,15 +145,16 @@ FAULTS = [
     r"KIT END variant=\w+ result=PASS",
 ]
 
-# CONFIG_KIT_SOAK_MINUTES of virtual time: no slip (the firmware's verdict
-# where the board expects the model to hold its deadlines), every NO_OP
-# answered, nothing allocated after init, stack high-water marks flat after
-# minute one, no health warning in any minute, every ping entry answered
-# over the soak. LAST stands for the build's last minute.
+# CONFIG_KIT_SOAK_CHECKPOINTS checkpoints of virtual time: no slip (the
+# firmware's verdict where the board expects the model to hold its
+# deadlines), every NO_OP answered, nothing allocated after init, stack
+# high-water marks flat after the first checkpoint, no health warning in
+# any, every ping entry answered over the soak. LAST stands for the build's
+# last checkpoint, LENGTH for its checkpoints' seconds.
 def _soak(variant: str, slips: str) -> list[str]:
     return [
-        rf"KIT SOAK minute=1 slips={slips} cycles_complete=yes .* health_warnings=0 noop=OK",
-        rf"KIT SOAK minute=LAST slips={slips} cycles_complete=yes .* stack_flat=yes .* heap_after_init=0 "
+        rf"KIT SOAK checkpoint=1 seconds=LENGTH slips={slips} cycles_complete=yes .* health_warnings=0 noop=OK",
+        rf"KIT SOAK checkpoint=LAST seconds=LENGTH slips={slips} cycles_complete=yes .* stack_flat=yes .* heap_after_init=0 "
         r"health_warnings=0 noop=OK",
         HEALTH_AT_REST,
         rf"KIT END variant={variant} result=PASS",
@@ -339,11 +340,13 @@ def test_scenario(dut: DeviceAdapter, scenario: str) -> None:
     expected = for_build(build, EXPECTED[variant][scenario])
     timeout_s = DEFAULT_TIMEOUT_S
     if scenario == "soak":
-        minutes = int(config_value(build, "CONFIG_KIT_SOAK_MINUTES"))
-        expected = [pattern.replace("minute=LAST", f"minute={minutes}") for pattern in expected]
-        if minutes == 1:  # one checkpoint: its line is minute one's and the last
+        checkpoints = int(config_value(build, "CONFIG_KIT_SOAK_CHECKPOINTS"))
+        seconds = int(config_value(build, "CONFIG_KIT_SOAK_CHECKPOINT_SECONDS"))
+        expected = [pattern.replace("checkpoint=LAST", f"checkpoint={checkpoints}").replace(
+            "seconds=LENGTH", f"seconds={seconds}") for pattern in expected]
+        if checkpoints == 1:  # one checkpoint: its line is the first's and the last
             expected = expected[1:]
-        timeout_s += SOAK_TIMEOUT_PER_MINUTE_S * minutes
+        timeout_s += SOAK_TIMEOUT_PER_MINUTE_S * checkpoints * seconds / 60
     prompt, asked = [], False
     deadline = time.monotonic() + DEFAULT_TIMEOUT_S
     while not asked and time.monotonic() < deadline:
