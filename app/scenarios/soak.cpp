@@ -46,10 +46,10 @@ bool playSoak(const Context& context) {
         const U32 stackUse = Report::stackUsedTotal();
         const bool flat = (checkpoint == 1) || (stackUse == settledStackUse);
         printk(
-            "KIT SOAK checkpoint=%u seconds=%u slips=%u cycles_complete=%s rg1kHz_latency_max=%u stack_used=%u stack_flat=%s "
-            "heap_bytes=%u heap_after_init=%u health_warnings=%u noop=%s\n",
-            static_cast<unsigned>(checkpoint),
-            static_cast<unsigned>(CONFIG_KIT_SOAK_CHECKPOINT_SECONDS), static_cast<unsigned>(slips), cyclesOk ? "yes" : "no",
+            "KIT SOAK checkpoint=%u seconds=%u slips=%u cycles_complete=%s rg1kHz_latency_max=%u stack_used=%u "
+            "stack_flat=%s heap_bytes=%u heap_after_init=%u health_warnings=%u noop=%s\n",
+            static_cast<unsigned>(checkpoint), static_cast<unsigned>(CONFIG_KIT_SOAK_CHECKPOINT_SECONDS),
+            static_cast<unsigned>(slips), cyclesOk ? "yes" : "no",
             static_cast<unsigned>(timing.record(0).latency.max()), static_cast<unsigned>(stackUse), flat ? "yes" : "no",
             static_cast<unsigned>(HeapMonitor::bytesRequested()),
             static_cast<unsigned>(HeapMonitor::allocationsAfterInit()), static_cast<unsigned>(Report::healthWarnings()),
