@@ -6,6 +6,7 @@ build and run of the result are CI's (kittools.suite's new-deployment step)."""
 
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from pathlib import Path
 
@@ -74,9 +75,14 @@ def test_adapts_the_template_once(tmp_path: Path, driver: str) -> None:
 def test_rates_the_driver_cannot_count_are_refused(tmp_path: Path) -> None:
     folder = make_template(tmp_path / "proj")
     before = snapshot(folder)
-    with pytest.raises(KitError, match=r"8,000,000,000.*--fastest-hz"):
+    with pytest.raises(KitError, match=r"8,000,000,000.*--fastest-hz") as refused:
         adapt.new_deployment(folder)
     assert snapshot(folder) == before  # nothing written
+    # The rate it suggests is one the kit's load sweep runs at whole
+    suggested = re.search(r"--fastest-hz (\d+) or more", str(refused.value))
+    assert suggested, refused.value
+    record = adapt.new_deployment(folder, Fraction(int(suggested.group(1))))
+    assert not [line for line in record.todo if "load sweep" in line], record.todo
 
 
 def test_a_folder_that_is_no_deployment_is_refused(tmp_path: Path) -> None:

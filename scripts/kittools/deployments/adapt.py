@@ -13,10 +13,8 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 
-from kittools import workspace
 from kittools.deployments import cpp, fpp, seam, template
 from kittools.deployments.template import RATE_GROUP_TYPES, Deployment
-from kittools.workspace import KitError
 
 #: The host's timer, whose CycleOut the kit's tick replaces
 HOST_TIMERS = ("Svc.LinuxTimer",)
@@ -358,22 +356,15 @@ def new_deployment(folder: Path, fastest_hz: Fraction | None = None) -> Record:
                 record.todo.append(f"{stale}: the host build's; the kit builds without it (its main, "
                                    "Top/KitTopology.cpp). Keep it for a host build of your own or delete it")
     top_us = 2 * deployment.rate_groups[0].period * 1_000_000
-    slice_max = load_slice_max_us()
+    slice_max = template.load_slice_max_us()
     if top_us > slice_max:
         record.todo.append(f"the load sweep reaches twice the fastest group's period, {float(top_us) / 1000:g} ms, "
                            f"past the load's slice limit ({slice_max / 1000:g} ms, app/Components/Load/Load.hpp): its "
                            "points above it are refused and the sweep fails; a faster fastest group (--fastest-hz "
-                           f"{-(-2_000_000 // slice_max)} or more) keeps it in range")
+                           f"{template.sweep_min_hz()} or more) keeps it in range")
     if "DataProducts" in deployment.subtopologies:
         record.todo.append("DataProducts takes its buffers from malloc (DataProductsConfig: 10 x 10,000 B by "
                            "default): the heap of a small board holds less")
     return record
 
 
-def load_slice_max_us() -> int:
-    """The kit's load's slice limit, where the component declares it."""
-    header = workspace.KIT_ROOT / "app" / "Components" / "Load" / "Load.hpp"
-    found = re.search(r"SLICE_MAX_US\s*=\s*(\d+)", header.read_text())
-    if not found:
-        raise KitError(f"{header} declares no SLICE_MAX_US")
-    return int(found.group(1))

@@ -144,6 +144,21 @@ KIT_TICK_HZ = 1000
 ROLLOVER_MAX = 2**32 - 1
 
 
+def load_slice_max_us() -> int:
+    """The kit's load's slice limit, where the component declares it."""
+    header = workspace.KIT_ROOT / "app" / "Components" / "Load" / "Load.hpp"
+    found = re.search(r"SLICE_MAX_US\s*=\s*(\d+)", header.read_text())
+    if not found:
+        raise KitError(f"{header} declares no SLICE_MAX_US")
+    return int(found.group(1))
+
+
+def sweep_min_hz() -> int:
+    """The slowest fastest group whose load sweep stays within the load's
+    slice limit: the sweep reaches twice the fastest group's period."""
+    return -(-2_000_000 // load_slice_max_us())
+
+
 def check_rollover(groups: list[RateGroup], folder: Path) -> None:
     divisors = [int(group.period * KIT_TICK_HZ) for group in groups]
     product = 1
@@ -154,7 +169,8 @@ def check_rollover(groups: list[RateGroup], folder: Path) -> None:
         raise KitError(f"the rates of '{folder}' ({rates}) at the kit's {KIT_TICK_HZ} Hz tick need divisors "
                        f"{' x '.join(f'{divisor:,}' for divisor in divisors)} = {product:,}, more than F´'s "
                        f"RateGroupDriver counts to ({ROLLOVER_MAX:,}, FwSizeType): give the fastest group's rate "
-                       "with --fastest-hz (the others keep their ratios to it), for example --fastest-hz 10")
+                       f"with --fastest-hz (the others keep their ratios to it): --fastest-hz {sweep_min_hz()} or "
+                       f"more keeps the kit's load sweep within its load's slice limit")
 
 
 def read(folder: Path, fastest_hz: Fraction | None = None) -> Deployment:
