@@ -262,9 +262,9 @@ class FullRun:
         # link's checks start, which wait for this lane)
         if not args.skip_twister and not args.board and last:
             steps.add_host(f"new deployment: fprime-util new --deployment, kit new-deployment, kit compare on "
-                           f"{template_deployment.BOARD} (every model), the fit on "
-                           f"{template_deployment.SMALL_BOARD}",
-                           functools.partial(template_deployment.run, self.log_dir))
+                           f"{template_deployment.BOARD} ({', '.join(template_deployment.compared_models(args.full))}"
+                           f"), the fit on {template_deployment.SMALL_BOARD}",
+                           functools.partial(template_deployment.run, self.log_dir, args.full))
         return steps
 
 
