@@ -152,13 +152,18 @@ macro(kit_deployment)
 
     # The execution model (CONFIG_KIT_MODEL_*): its folder's model.cmake
     # registers its config and OS layer and sets KIT_MODEL_SOURCES and
-    # KIT_MODEL_IMPLEMENTATIONS.
+    # KIT_MODEL_IMPLEMENTATIONS (and KIT_MODEL_FILE_IMPLEMENTATION where
+    # the model needs its own Os::File).
     set(KIT_MODEL_DIR "${KIT_ROOT}/${CONFIG_KIT_MODEL_NAME}")
     include("${KIT_MODEL_DIR}/model.cmake")
 
     # F´'s file system, the same in every model: fprime-baremetal's MicroFs
-    # in RAM (app/src/RamFs.cpp), or none
-    if(CONFIG_KIT_RAMFS)
+    # in RAM (app/src/RamFs.cpp), or none. A model whose tasks preempt one
+    # another takes it behind a lock (its model.cmake sets
+    # KIT_MODEL_FILE_IMPLEMENTATION: rtos/Os/LockedFile.hpp).
+    if(CONFIG_KIT_RAMFS AND KIT_MODEL_FILE_IMPLEMENTATION)
+        set(KIT_FILE_IMPLEMENTATION ${KIT_MODEL_FILE_IMPLEMENTATION})
+    elseif(CONFIG_KIT_RAMFS)
         set(KIT_FILE_IMPLEMENTATION Os_File_Baremetal_MicroFs)
     else()
         set(KIT_FILE_IMPLEMENTATION Os_File_Stub)

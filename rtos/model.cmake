@@ -12,6 +12,9 @@ set(KIT_MODEL_IMPLEMENTATIONS
     Kit_Os_Task_ZephyrPriority  # fprime-zephyr's task, with F´ priorities mapped onto Zephyr's
     Os_Mutex_Zephyr             # k_mutex / k_condvar
 )
+# MicroFs, each call under one lock (rtos/Os/LockedFile.hpp), where the
+# build has a file system (app/kit.cmake)
+set(KIT_MODEL_FILE_IMPLEMENTATION Kit_Os_File_LockedMicroFs)
 if(CONFIG_KIT_QUEUE_KIT)
     list(APPEND KIT_MODEL_IMPLEMENTATIONS Kit_Os_Queue_Zephyr)  # semaphores and a spinlock (rtos/Os)
 endif()
