@@ -65,6 +65,9 @@ def test_adapts_the_template_once(tmp_path: Path, driver: str) -> None:
     table = (folder / "Top" / "KitTopology.cpp").read_text()
     assert '{"rateGroup1", CONFIG_KIT_TICK_HZ * 1 / 10, 0}' in table
     assert '{"rateGroup3", CONFIG_KIT_TICK_HZ * 2 / 5, 2}' in table
+    # The template's ChronoTime is OsTime, which counts from the epoch set at
+    # setup (without it every event and channel carries time zero)
+    assert "MyDeployment::chronoTime.set_epoch(Fw::Time(0, 0), now);" in table
     assert "Kit.FatalHandler" in (folder / "config" / "CdhCoreFatalHandlerConfig.fpp").read_text()
     # Run twice, it changes nothing
     before = snapshot(folder)

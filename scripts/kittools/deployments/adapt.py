@@ -20,8 +20,6 @@ from kittools.deployments.template import RATE_GROUP_TYPES, Deployment
 HOST_TIMERS = ("Svc.LinuxTimer",)
 #: The host's link drivers, which the kit's ground link (its UART) replaces
 HOST_DRIVERS = ("Drv.TcpClient", "Drv.TcpServer", "Drv.LinuxUartDriver")
-#: The host's clocks, which F´'s OsTime (Os::RawTime on the board) replaces
-HOST_CLOCKS = ("Svc.ChronoTime", "Svc.PosixTime")
 #: F´'s comm subtopologies, which the kit's ground link replaces (F´ framing,
 #: what kit gds, the fuzzers and the integration suite speak)
 COMM = re.compile(r"^Com(Ccsds|Fprime)\.")
@@ -198,7 +196,7 @@ def adapt_instances(text: str, deployment: Deployment, plan: seam.Plan, record: 
                 "board's link UART"])
             record.changes.append(f"{path}: {instance.name} ({instance.type}) removed: the kit's ground link "
                                   "(Kit.linkUart, the board's link UART) carries the link")
-        elif instance.type in HOST_CLOCKS:
+        elif instance.type in template.HOST_CLOCKS:
             block = "\n".join(lines[instance.first:instance.last + 1]).replace(instance.type, "Svc.OsTime", 1)
             replace[instance.first] = (instance.last, block.splitlines())
             record.changes.append(f"{path}: {instance.name} is Svc.OsTime (the board's clock through Os::RawTime), "

@@ -9,6 +9,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from kittools.deployments.seam import Plan
+from kittools.deployments.template import HOST_CLOCKS
 
 
 def _period(period: Fraction) -> tuple[int, int]:
@@ -127,7 +128,10 @@ def kit_topology_cpp(result: Plan) -> str:
     time = deployment.patterns.get("time")
     time_instance = deployment.instance(time) if time else None
     epoch = ""
-    if time is not None and time_instance is not None and time_instance.type == "Svc.OsTime":
+    # OsTime counts from an epoch it is given: without one its time stays at
+    # zero, and every event and channel carries the same time. The host's
+    # clocks become OsTime (adapt.py), so theirs is set too.
+    if time is not None and time_instance is not None and time_instance.type in ("Svc.OsTime", *HOST_CLOCKS):
         epoch = (f"    // Time starts at zero at boot\n    Os::RawTime now;\n    (void)now.now();\n"
                  f"    {deployment.cpp(time)}.set_epoch(Fw::Time(0, 0), now);\n")
     sequencers = "".join(f"    // The sequencer's buffer, from F´'s allocator (the template's size)\n"
@@ -145,6 +149,7 @@ def kit_topology_cpp(result: Plan) -> str:
 // ======================================================================
 #include "{deployment.include_root}/Top/KitTopology.hpp"
 #include <Fw/Types/Assert.hpp>
+#include <Os/RawTime.hpp>
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Subtopologies/GroundLink/GroundLink.hpp"

@@ -137,6 +137,8 @@ def _rates(folder: Path, groups: list[str]) -> list[Fraction] | None:
     return None
 
 
+#: The host's clocks, which F´'s OsTime (Os::RawTime on the board) replaces
+HOST_CLOCKS = ("Svc.ChronoTime", "Svc.PosixTime")
 #: The kit's tick (CONFIG_KIT_TICK_HZ's default, app/Kconfig)
 KIT_TICK_HZ = 1000
 #: F´'s RateGroupDriver multiplies its divisors into a rollover count of
