@@ -41,3 +41,40 @@ def test_steps_not_beside_run_one_after_another_in_order():
     order: list[str] = []
     steps = [plan.Step(name, lambda name=name: (order.append(name), Tally(1, 0))[1]) for name in "abc"]
     assert plan.run_steps(steps).passed == 3 and order == ["a", "b", "c"]
+
+
+def test_the_closing_lines_repeat_what_failed_on_the_way(monkeypatch, capsys):
+    """CI shows a long run's last lines: they name the failed checks, said
+    in any step of either lane, before the count."""
+    import contextlib
+
+    from kittools.log import say
+
+    monkeypatch.setattr(plan, "one_at_a_time", lambda name: contextlib.nullcontext())
+
+    def failing() -> Tally:
+        say("  board_model: fuzzing (seed 1): 2 invalid frames: FAIL: LinkHealth.Oversized: 1, expected 2")
+        say("  board_model: flood: PASS")
+        return Tally(1, 1)
+
+    steps = plan.Plan()
+    steps.add_qemu("ground link", failing)
+    steps.add_host("tooling tests", lambda: Tally(3, 0))
+    assert steps.run() == 1
+    out = capsys.readouterr().out.splitlines()
+    summary = out[out.index("[kit] what failed (2 line(s) said above):"):]
+    assert summary == ["[kit] what failed (2 line(s) said above):",
+                       "[kit]   board_model: fuzzing (seed 1): 2 invalid frames: FAIL: LinkHealth.Oversized: 1, "
+                       "expected 2",
+                       "[kit]   ground link: 1 passed, 1 failed (0 s)",
+                       "total: 4 passed, 1 failed"]
+
+
+def test_a_run_that_failed_nothing_says_no_failures(monkeypatch, capsys):
+    import contextlib
+
+    monkeypatch.setattr(plan, "one_at_a_time", lambda name: contextlib.nullcontext())
+    steps = plan.Plan()
+    steps.add_qemu("twister", lambda: Tally(5, 0))
+    assert steps.run() == 0
+    assert "what failed" not in capsys.readouterr().out

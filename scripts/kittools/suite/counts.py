@@ -80,3 +80,9 @@ def junit_tally(path: Path) -> Tally:
     tests = sum(int(s.get("tests", 0)) for s in suites)
     bad = sum(int(s.get("failures", 0)) + int(s.get("errors", 0)) for s in suites)
     return Tally(passed=tests - bad - sum(int(s.get("skipped", 0)) for s in suites), failed=bad)
+
+
+def junit_failures(path: Path) -> list[str]:
+    """The names of a JUnit report's failed or erred test cases."""
+    return [str(case.get("name")) for case in ET.parse(path).getroot().iter("testcase")
+            if case.find("failure") is not None or case.find("error") is not None]

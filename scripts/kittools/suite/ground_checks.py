@@ -19,7 +19,7 @@ from kittools.build import runner
 from kittools.link import file_fuzz, flood, fuzz, ground, serial_sweep
 from kittools.log import LOG, say
 from kittools.suite import platforms, results
-from kittools.suite.counts import Tally, junit_tally, run_logged
+from kittools.suite.counts import Tally, junit_failures, junit_tally, run_logged
 from kittools.suite.platforms import TWISTER_OUT
 from kittools.workspace import KIT_ROOT, KitError, check_board
 
@@ -148,6 +148,8 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
     tally = junit_tally(xml)
     say(f"  {name}: {tally.passed} passed, {tally.failed} failed "
         f"({time.monotonic() - started:.0f} s; logs {logs})")
+    if tally.failed:
+        say(f"  {name}: FAIL: {', '.join(junit_failures(xml))} (pytest.log: {logs / 'pytest.log'})")
     return tally
 
 

@@ -14,9 +14,13 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from kittools.log import say
+from kittools.log import failures_kept, say
 from kittools.suite.counts import Tally
 from kittools.workspace import one_at_a_time
+
+#: The failure lines the closing summary repeats, and how much of each
+FAILURES_SHOWN = 20
+FAILURE_LINE_MAX = 400
 
 
 @dataclass
@@ -42,14 +46,22 @@ class Plan:
         self.host.append(Step(name, run))
 
     def run(self) -> int:
-        """Both lanes at once, the closing count, the exit status."""
+        """Both lanes at once, the closing count, the exit status; before
+        the count, every failure line said on the way (FAILURES_SHOWN of
+        them at most), so that a log's tail names what failed."""
         started = time.monotonic()
-        with one_at_a_time("test"), concurrent.futures.ThreadPoolExecutor(max_workers=1) as beside:
+        with failures_kept() as failures, one_at_a_time("test"), \
+                concurrent.futures.ThreadPoolExecutor(max_workers=1) as beside:
             host = beside.submit(run_steps, self.host)
             host.add_done_callback(lambda _: self.host_done.set())
             total = run_steps(self.qemu)
             total.add(host.result())
         say(f"all steps: {time.monotonic() - started:.0f} s")
+        if failures:
+            shown = f", the first {FAILURES_SHOWN}" if len(failures) > FAILURES_SHOWN else ""
+            say(f"what failed ({len(failures)} line(s) said above{shown}):")
+            for line in failures[:FAILURES_SHOWN]:
+                say(f"  {line.strip()[:FAILURE_LINE_MAX]}")
         print(f"total: {total.passed} passed, {total.failed} failed")
         return 0 if total.failed == 0 and total.passed > 0 else 1
 
