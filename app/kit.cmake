@@ -151,20 +151,21 @@ macro(kit_deployment)
     endif()
 
     # The execution model (CONFIG_KIT_MODEL_*): its folder's model.cmake
-    # registers its config and OS layer and sets KIT_MODEL_SOURCES and
-    # KIT_MODEL_IMPLEMENTATIONS (and KIT_MODEL_FILE_IMPLEMENTATION where
-    # the model needs its own Os::File).
+    # registers its config and OS layer and sets KIT_MODEL_SOURCES,
+    # KIT_MODEL_IMPLEMENTATIONS and KIT_MODEL_FILE_IMPLEMENTATION.
     set(KIT_MODEL_DIR "${KIT_ROOT}/${CONFIG_KIT_MODEL_NAME}")
     include("${KIT_MODEL_DIR}/model.cmake")
 
     # F´'s file system, the same in every model: fprime-baremetal's MicroFs
-    # in RAM (app/src/RamFs.cpp), or none. A model whose tasks preempt one
-    # another takes it behind a lock (its model.cmake sets
-    # KIT_MODEL_FILE_IMPLEMENTATION: rtos/Os/LockedFile.hpp).
-    if(CONFIG_KIT_RAMFS AND KIT_MODEL_FILE_IMPLEMENTATION)
+    # in RAM (app/src/RamFs.cpp), or none. Each model names its Os::File
+    # over it: as it is where one context runs (baremetal), behind a lock
+    # where tasks preempt one another (rtos/Os/LockedFile.hpp).
+    if(NOT KIT_MODEL_FILE_IMPLEMENTATION)
+        message(FATAL_ERROR "${KIT_MODEL_DIR}/model.cmake sets no KIT_MODEL_FILE_IMPLEMENTATION: name the "
+                            "model's Os::File over the RAM file system (baremetal/model.cmake, rtos/model.cmake)")
+    endif()
+    if(CONFIG_KIT_RAMFS)
         set(KIT_FILE_IMPLEMENTATION ${KIT_MODEL_FILE_IMPLEMENTATION})
-    elseif(CONFIG_KIT_RAMFS)
-        set(KIT_FILE_IMPLEMENTATION Os_File_Baremetal_MicroFs)
     else()
         set(KIT_FILE_IMPLEMENTATION Os_File_Stub)
     endif()

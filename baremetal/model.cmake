@@ -19,3 +19,6 @@ set(KIT_MODEL_IMPLEMENTATIONS
 if(CONFIG_KIT_QUEUE_KIT)
     list(APPEND KIT_MODEL_IMPLEMENTATIONS Kit_Os_Queue_Cooperative)  # no lock, no waiting (baremetal/Os)
 endif()
+# F´'s files on the RAM file system (app/kit.cmake): fprime-baremetal's
+# MicroFs as it is, which takes no lock; one context, so nothing can race
+set(KIT_MODEL_FILE_IMPLEMENTATION Os_File_Baremetal_MicroFs)
