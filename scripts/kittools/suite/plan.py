@@ -61,7 +61,7 @@ class Plan:
             shown = f", the first {FAILURES_SHOWN}" if len(failures) > FAILURES_SHOWN else ""
             say(f"what failed ({len(failures)} line(s) said above{shown}):")
             for line in failures[:FAILURES_SHOWN]:
-                say(f"  {line.strip()[:FAILURE_LINE_MAX]}")
+                say(f"  {line.strip().splitlines()[0][:FAILURE_LINE_MAX]}")  # its first line: the check's
         print(f"total: {total.passed} passed, {total.failed} failed")
         return 0 if total.failed == 0 and total.passed > 0 else 1
 
