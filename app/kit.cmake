@@ -229,4 +229,16 @@ macro(kit_zephyr_link)
         COMMENT "Reading the F´ dictionary's id and counts")
     target_sources(app PRIVATE "${KIT_DICTIONARY_HEADER}" "${KIT_ROOT}/app/src/DictionaryChecks.cpp")
     target_include_directories(app PRIVATE "${CMAKE_BINARY_DIR}/kit")
+
+    # The instruments' string constants (Kit.RamFs, the RAM file system's
+    # names, in every deployment's dictionary: Instruments.fpp). F´ makes
+    # their definitions in the subtopology's FppConstantsAc.cpp and, the
+    # subtopology being an interface, compiles it nowhere; a setup that
+    # names a file from them (the reference's parameter database) needs it.
+    get_module_name("${KIT_ROOT}/app/Subtopologies/Instruments")
+    get_target_property(KIT_INSTRUMENTS_DIR "${MODULE_NAME}" BINARY_DIR)
+    set(KIT_INSTRUMENTS_CONSTANTS "${KIT_INSTRUMENTS_DIR}/FppConstantsAc.cpp")
+    set_source_files_properties("${KIT_INSTRUMENTS_CONSTANTS}" PROPERTIES GENERATED TRUE)
+    target_sources(app PRIVATE "${KIT_INSTRUMENTS_CONSTANTS}")
+    add_dependencies(app "${MODULE_NAME}")
 endmacro()

@@ -6,6 +6,7 @@
 #ifndef KIT_KITTOPOLOGYDEFS_HPP
 #define KIT_KITTOPOLOGYDEFS_HPP
 
+#include "app/Subtopologies/Instruments/FppConstantsAc.hpp"  // Kit.RamFs: the parameter file's name
 #include "app/Top/FppConstantsAc.hpp"
 #include "app/src/TopologyState.hpp"
 

@@ -19,7 +19,8 @@ namespace Kit {
 namespace Report {
 
 //! The BANNER line: the variant (CONFIG_KIT_VARIANT_NAME), the board, the
-//! commits and the timing conditions
+//! commits and the timing conditions, with the rate groups' hyperperiod
+//! (a segment the ground asks for is a whole number of them)
 void banner();
 
 //! The LINK line: the ground link is up, on the board's link UART

@@ -11,7 +11,7 @@ def console_log(variant: str = "baremetal", slips: int = 0, result: str = "PASS"
     return "\n".join([
         "*** Booting Zephyr OS build 0d6f47a50097 ***",
         f"KIT BANNER variant={variant} board=qemu_cortex_m3 kit=abc zephyr=4.0.0/0d6f fprime=6c80 tick_hz=1000 "
-        "sys_tick_hz=1000 cycles_hz=12000000 icount_shift=4 run_ticks=2000",
+        "sys_tick_hz=1000 cycles_hz=12000000 icount_shift=4 run_ticks=2000 hyperperiod_ticks=100",
         f"KIT RG name=rg1kHz hz=1000 cycles=2000 expected=2000 slips={slips} late_starts=0 lost_stamps=0 "
         "latency_min=550 latency_p50=600 latency_p99=1100 latency_max=1200 exec_min=73 exec_p50=80 exec_p99=2000 "
         "exec_max=2400 jitter_min=0 jitter_p50=12 jitter_p99=120 jitter_max=157 period_min=11842 period_max=12157",

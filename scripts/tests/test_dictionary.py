@@ -59,3 +59,26 @@ def test_a_command_the_dictionary_lacks_names_it(tmp_path: Path):
     names = Dictionary.read(_dictionary(tmp_path, {"Thermal.cmdDisp.CMD_NO_OP": 1}))
     with pytest.raises(KitError, match="has no command Kit.load.SET_SLICE"):
         names.opcode("Kit.load.SET_SLICE")
+
+
+@pytest.mark.parametrize("uplinks, found", [
+    (("Kit.fileUplink",), "Kit.fileUplink"),  # the reference deployment
+    (("FileHandling.fileUplink",), "FileHandling.fileUplink"),  # F´'s FileHandling subtopology (fprime-util's template)
+    ((), None),  # a deployment or a board profile without one
+])
+def test_the_file_uplink_is_the_instance_with_its_channels_whatever_its_name(
+        tmp_path: Path, uplinks: tuple[str, ...], found: str | None):
+    channels = tuple(f"{uplink}.{name}" for uplink in uplinks for name in ("FilesReceived", "PacketsReceived",
+                                                                           "Warnings"))
+    # An instance with only some of its channels is not one (FileDownlink has FilesSent, Warnings)
+    channels += ("FileHandling.fileDownlink.FilesSent", "FileHandling.fileDownlink.Warnings")
+    names = Dictionary.read(_dictionary(tmp_path, {"Thermal.cmdDisp.CMD_NO_OP": 1}, channels))
+    assert names.file_uplink == found
+
+
+def test_two_file_uplinks_are_one_clear_error(tmp_path: Path):
+    channels = tuple(f"{uplink}.{name}" for uplink in ("A.fileUplink", "B.fileUplink")
+                     for name in ("FilesReceived", "PacketsReceived", "Warnings"))
+    names = Dictionary.read(_dictionary(tmp_path, {"Thermal.cmdDisp.CMD_NO_OP": 1}, channels))
+    with pytest.raises(KitError, match="found 2: A.fileUplink, B.fileUplink"):
+        _ = names.file_uplink

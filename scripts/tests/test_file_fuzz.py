@@ -109,14 +109,15 @@ def test_files_count_from_events_only_where_every_read_out_overflowed_the_downli
     """FilesReceived is the check, unless the last read-out's writes may not
     have come down; then the FileReceived events (one with each count) are,
     and a count that differs from the model fails either way."""
-    outcome = file_fuzz.Outcome(seed=1, noops_sent=1, noops_answered=1)
+    # A deployment's own name for it (F´'s FileHandling subtopology's)
+    outcome = file_fuzz.Outcome(seed=1, file_uplink="FileHandling.fileUplink", noops_sent=1, noops_answered=1)
     outcome.model.files = 3
-    outcome.telemetry = {"Kit.fileUplink.PacketsReceived": 0, "Kit.fileUplink.Warnings": 0,
-                         "Kit.fileUplink.FilesReceived": 2, "Kit.linkHealth.UartRingDrops": 0}
-    outcome.events[file_fuzz.FILE_RECEIVED_EVENT] = 3
+    outcome.telemetry = {"FileHandling.fileUplink.PacketsReceived": 0, "FileHandling.fileUplink.Warnings": 0,
+                         "FileHandling.fileUplink.FilesReceived": 2, "Kit.linkHealth.UartRingDrops": 0}
+    outcome.events["FileHandling.fileUplink.FileReceived"] = 3
     assert outcome.failures() == ["FileUplink.FilesReceived: 2, expected 3"]
     outcome.read_out_overflowed = True
     assert outcome.failures() == []
-    outcome.events[file_fuzz.FILE_RECEIVED_EVENT] = 4
+    outcome.events["FileHandling.fileUplink.FileReceived"] = 4
     assert outcome.failures() == ["FileUplink's FileReceived events: 4, expected 3"]
     assert outcome.to_json()["read_out_overflowed"] is True

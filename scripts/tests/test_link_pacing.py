@@ -13,10 +13,13 @@ import pytest
 from kittools.link import client, flood, serial_points
 from kittools.link.client import START_WORD_BYTES, bytes_per_second, line_rate
 from kittools.link.health import LinkCounts
-from kittools.link.serial_points import Offer, PointTraffic, traffic_time
+from kittools.link.serial_points import Offer, PointTraffic, SegmentClock, traffic_time
 from kittools.workspace import KitError
 
 NOOP = bytes(18)
+# The reference deployment's: a 1 kHz tick, its 10 Hz group's hyperperiod
+REFERENCE_CLOCK = SegmentClock(1000, 100)
+POINT_S = REFERENCE_CLOCK.point_s()
 
 
 def test_the_line_rate_comes_from_the_link_line():
@@ -46,10 +49,33 @@ def test_a_point_offers_the_same_traffic_whatever_the_host_timing():
     bytes go up, only in other chunks (a slow host takes longer)."""
     coarse = [i * 0.1 for i in range(3000)]
     fine = [i * 0.003 for i in range(1000)]
-    a_traffic, a_bytes = play(Offer(NOOP, 40, 5000, seed=7), coarse)
-    b_traffic, b_bytes = play(Offer(NOOP, 40, 5000, seed=7), fine)
-    assert a_traffic.commands_sent == b_traffic.commands_sent == int(40 * serial_points.POINT_S)
-    assert len(a_bytes) == len(b_bytes) == a_traffic.commands_sent * len(NOOP) + int(5000 * serial_points.POINT_S)
+    a_traffic, a_bytes = play(Offer(NOOP, POINT_S, 40, 5000, seed=7), coarse)
+    b_traffic, b_bytes = play(Offer(NOOP, POINT_S, 40, 5000, seed=7), fine)
+    assert a_traffic.commands_sent == b_traffic.commands_sent == int(40 * POINT_S)
+    assert len(a_bytes) == len(b_bytes) == a_traffic.commands_sent * len(NOOP) + int(5000 * POINT_S)
+
+
+def test_a_segment_is_whole_hyperperiods_of_the_deployment():
+    """Timing refuses any other length: the sweep asks for the whole number
+    of hyperperiods nearest its second, the flood for those nearest its 10 s."""
+    assert REFERENCE_CLOCK.segment_ticks() == 1000 and POINT_S == pytest.approx(1.2)
+    template = SegmentClock(1000, 80)  # fprime-util's template: 50, 25 and 12.5 Hz groups
+    assert template.segment_ticks() == 1040 and template.ticks(flood.FLOOD_S) == 10_000
+    thermal = SegmentClock(1000, 1000)  # tests/team/Thermal: its 1 Hz group; the point covers the wait for it
+    assert thermal.segment_ticks() == 1000 and thermal.point_s() == pytest.approx(2.1)
+    slow = SegmentClock(500, 1500)  # longer than a second: one hyperperiod
+    assert slow.segment_ticks() == 1500 and slow.seconds(slow.segment_ticks()) == 3.0
+    assert SegmentClock(1000, 300).segment_ticks() == 900  # 3.33 hyperperiods: the nearest is 3
+
+
+def test_a_banner_gives_the_segment_clock_and_an_old_build_one_clear_error():
+    lines = ["*** Booting Zephyr OS ***",
+             "KIT BANNER variant=rtos board=mps2/an385 tick_hz=1000 run_ticks=2000 hyperperiod_ticks=80"]
+    assert SegmentClock.of_console(lines) == SegmentClock(1000, 80)
+    with pytest.raises(KitError, match="older kit; rebuild it"):
+        SegmentClock.of_console(["KIT BANNER variant=rtos tick_hz=1000 run_ticks=2000"])
+    with pytest.raises(KitError, match="no line"):
+        SegmentClock.of_console([])
 
 
 def test_a_late_host_does_not_make_up_its_lag_in_a_burst():
@@ -64,13 +90,13 @@ def test_a_late_host_does_not_make_up_its_lag_in_a_burst():
 
 
 def test_an_offer_is_complete_only_when_all_its_traffic_went():
-    offer = Offer(NOOP, 10, 1000)
+    offer = Offer(NOOP, POINT_S, 10, 1000)
     traffic = PointTraffic("noise", 0, 50)
     offer.due(0.5, traffic)
     assert not offer.complete()
     for step in range(1, 2000):
         offer.due(0.5 + step * 0.01, traffic)
-    assert offer.complete() and traffic.commands_sent == int(10 * serial_points.POINT_S)
+    assert offer.complete() and traffic.commands_sent == int(10 * POINT_S)
 
 
 class FakeLink:
@@ -241,3 +267,13 @@ def test_every_serial_axis_is_judged_as_host_timed():
     from kittools import sweep
 
     assert {axis.unit for axis in serial_points.AXES} <= set(sweep.HOST_TIMED_UNITS)
+
+
+def test_the_downlink_axis_offers_what_the_deployments_slices_can():
+    """Packets per slice times the slices' rate: the reference's 100 Hz
+    slices offer the axis' levels; slower slices the nearest each can, up to
+    Load's 16 a slice, and no level twice."""
+    assert serial_points.downlink_levels(100) == [(0, 0), (100, 1), (200, 2), (400, 4), (800, 8), (1600, 16)]
+    assert serial_points.downlink_levels(50) == [(0, 0), (100, 2), (200, 4), (400, 8), (800, 16)]
+    assert serial_points.downlink_levels(40) == [(0, 0), (120, 3), (200, 5), (400, 10), (640, 16)]
+    assert serial_points.downlink_levels(1000) == [(0, 0), (1000, 1), (2000, 2)]

@@ -69,10 +69,35 @@ def test_adapts_the_template_once(tmp_path: Path, driver: str) -> None:
     # setup (without it every event and channel carries time zero)
     assert "MyDeployment::chronoTime.set_epoch(Fw::Time(0, 0), now);" in table
     assert "Kit.FatalHandler" in (folder / "config" / "CdhCoreFatalHandlerConfig.fpp").read_text()
+    # F´'s FileHandling and the sequencer get the kit's RAM file system (without it every file call fails)
+    conf = (folder / "deployment.conf").read_text()
+    assert "CONFIG_KIT_RAMFS=y" in conf and "FileHandling.fileUplink" in conf
     # Run twice, it changes nothing
     before = snapshot(folder)
     again = adapt.new_deployment(folder)
     assert again.changes == [] and snapshot(folder) == before
+
+
+def _group_of(topology: str, member: str) -> str:
+    return next(line.split(".RateGroupMemberOut")[0].strip() for line in topology.splitlines()
+                if ".RateGroupMemberOut[" in line and line.split("->")[1].strip() == member)
+
+
+@pytest.mark.parametrize("fastest_hz, uplink", [(50, "rateGroup2"), (10, "rateGroup1")])
+def test_the_scripted_uplink_shares_the_bursts_group_where_that_group_is_fast_enough(
+        tmp_path: Path, fastest_hz: int, uplink: str) -> None:
+    """The faults scenario commands the burst on and off two uplink cycles
+    apart: on the burst's group (25 Hz here) that spans two bursts; a group
+    slower than 10 Hz (5 Hz here) would not run a scenario's script within
+    its run, and the uplink stays on the fastest."""
+    folder = make_template(tmp_path / "proj")
+    adapt.new_deployment(folder, Fraction(fastest_hz))
+    topology = (folder / "Top" / "topology.fpp").read_text()
+    assert _group_of(topology, "Kit.load.burstIn") == "rateGroup2"
+    assert _group_of(topology, "Kit.uplink.schedIn") == uplink
+    assert _group_of(topology, "Kit.load.sliceIn") == "rateGroup1"
+    # F´'s dispatcher writes its telemetry only in its run port, which the template leaves unscheduled
+    assert _group_of(topology, "CdhCore.cmdDisp.run") == uplink
 
 
 def test_rates_the_driver_cannot_count_are_refused(tmp_path: Path) -> None:

@@ -2,8 +2,14 @@
 """The load sweep in the report: parsed from SWEEP/BREAK records, breaking
 points computed and cross-checked, plots and guidance generated."""
 
+import json
+from pathlib import Path
+
+import pytest
+
 from kittools import console, metrics, model, sweep
 from kittools.link import client, serial_sweep
+from kittools.link.dictionary import Dictionary
 from kittools.report import analysis, link_report, writer
 from kittools.sizes.memory import Footprint
 
@@ -307,15 +313,27 @@ def test_a_host_timed_axis_breaks_past_a_share_a_deterministic_one_at_any_miss()
     assert link_report.delivery_breaking_point(plays, "uplink") == 300
 
 
-def test_health_stops_pinging_the_event_service_with_its_own_command() -> None:
+def _names(tmp_path: Path, commands: dict[str, int]) -> Dictionary:
+    path = tmp_path / "TopologyDictionary.json"
+    path.write_text(json.dumps({"commands": [{"name": name, "opcode": opcode} for name, opcode in commands.items()]}))
+    return Dictionary.read(path)
+
+
+@pytest.mark.parametrize("health, events", [("Kit.health", "Kit.events"),  # the reference
+                                            ("CdhCore.health", "CdhCore.events")])  # F´'s CdhCore subtopology
+def test_health_stops_pinging_the_event_service_with_its_own_command(tmp_path: Path, health: str,
+                                                                     events: str) -> None:
     """HLTH_PING_ENABLE's arguments as F´ serializes them: the entry's name
-    (a U16 length, then its bytes), then Fw.Enabled as a U8; no frame where
-    the build has no health."""
-    opcodes = {"Kit.health.HLTH_PING_ENABLE": 0x2901}
-    sent = serial_sweep.ping_enable(opcodes, "Kit_eventsPing", enabled=False)
-    assert sent == client.frame(client.command(0x2901, b"\x00\x0eKit_eventsPing\x00"))
-    assert serial_sweep.ping_enable(opcodes, "Kit_eventsPing", enabled=True) != sent
-    assert serial_sweep.ping_enable({}, "Kit_eventsPing", enabled=False) is None
+    (a U16 length, then its bytes), then Fw.Enabled as a U8, for the event
+    service's entry by F´'s name and by the reference's probe; nothing
+    where the build has no health."""
+    names = _names(tmp_path, {f"{health}.HLTH_PING_ENABLE": 0x2901, f"{events}.SET_ID_FILTER": 0x2A01})
+    entry = events.replace(".", "_").encode()
+    sent = serial_sweep.ping_enable(names, enabled=False)
+    assert sent == (client.frame(client.command(0x2901, len(entry).to_bytes(2, "big") + entry + b"\x00"))
+                    + client.frame(client.command(0x2901, (len(entry) + 4).to_bytes(2, "big") + entry + b"Ping\x00")))
+    assert serial_sweep.ping_enable(names, enabled=True) != sent
+    assert serial_sweep.ping_enable(_names(tmp_path, {f"{events}.SET_ID_FILTER": 1}), enabled=False) == b""
 
 
 def test_the_sweep_table_says_how_the_scenario_shaped_its_axis():

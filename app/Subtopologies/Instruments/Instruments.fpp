@@ -9,6 +9,25 @@
 # read any deployment alike.
 module Kit {
 
+  @ The RAM file system (fprime-baremetal's MicroFs, app/src/RamFs.cpp),
+  @ the kit's in every deployment, so its files' names are in every
+  @ dictionary (the ground tools' file checks use them; app/kit.cmake
+  @ compiles them). It names a file by its bin and slot: bin 0 holds
+  @ CONFIG_KIT_RAMFS_FILES files of CONFIG_KIT_RAMFS_FILE_SIZE bytes, bin 1
+  @ (where the build has it) the bulk file of CONFIG_KIT_RAMFS_BULK_FILE_SIZE
+  @ bytes
+  module RamFs {
+    @ The parameter database's file (in the dictionary: the ground names
+    @ it in PRM_LOAD_FILE)
+    dictionary constant parameterFile = "/bin0/file0"
+    @ A file a ground test may write and load (PRM_LOAD_FILE), and where
+    @ the ground uplinks a sequence for the sequencer (CS_RUN)
+    dictionary constant scratchFile = "/bin0/file1"
+    @ The file the file downlink's test fills (Load.FILL_FILE) and sends,
+    @ and the file uplink's test writes
+    dictionary constant bulkFile = "/bin1/file0"
+  }
+
   @ The tick's source and the rate groups' probe: every group's start and
   @ end, its latency and jitter, its overruns (app/Components/Timing)
   instance timing: Kit.Timing base id 0x1000

@@ -14,6 +14,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from kittools.deployments import cpp, fpp, seam, template
+from kittools.deployments.members import kit_members, uplink_group
 from kittools.deployments.template import RATE_GROUP_TYPES, Deployment
 
 #: The host's timer, whose CycleOut the kit's tick replaces
@@ -64,20 +65,6 @@ def map_endpoint(endpoint: str, removed: dict[str, str]) -> str:
             return "Kit.downlink.comIn[1]" if "TELEMETRY" in index or index == "1" else "Kit.downlink.comIn[0]"
         return COMM_PORTS.get(local, DROP)
     return endpoint
-
-
-def kit_members(plan: seam.Plan, group: int) -> tuple[list[str], list[str]]:
-    """The kit's members of rate group `group`: the probe first, then the
-    deployment's, then the kit's own, and the probe last."""
-    last_group = len(plan.deployment.rate_groups) - 1
-    after = []
-    if group == 0:
-        after += ["Kit.load.sliceIn", "Kit.linkUart.schedIn", "Kit.uplink.schedIn", "Kit.comQueue.run",
-                  "Kit.linkHealth.schedIn"]
-    if group == min(1, last_group):
-        after.append("Kit.load.burstIn")
-    after += [f"Kit.faults.schedIn[{group}]", f"Kit.timing.cycleEnd[{group}]"]
-    return [f"Kit.timing.cycleStart[{group}]"], after
 
 
 def adapt_topology(text: str, deployment: Deployment, plan: seam.Plan, removed: dict[str, str],
@@ -363,6 +350,15 @@ def new_deployment(folder: Path, fastest_hz: Fraction | None = None) -> Record:
     if "DataProducts" in deployment.subtopologies:
         record.todo.append("DataProducts takes its buffers from malloc (DataProductsConfig: 10 x 10,000 B by "
                            "default): the heap of a small board holds less")
+    if plan.dispatcher_run:
+        record.changes.append(f"Top/topology.fpp: {plan.dispatcher_run} in rate group "
+                              f"{deployment.rate_groups[uplink_group(plan)].name}, as F´'s Ref has it: the "
+                              "dispatcher writes its telemetry (CommandErrors, CommandsDispatched) only there")
+    if "FileHandling" in deployment.subtopologies:
+        record.todo.append("F´'s FileHandling names the parameter database's file PrmDb.dat, a name the kit's RAM "
+                           "file system (MicroFs: /bin<b>/file<n>) does not have: the database starts with its "
+                           "defaults and PRM_SAVE_FILE fails until it is configured with Kit.RamFs.parameterFile "
+                           "(the reference's app/Top/instances.fpp)")
     return record
 
 

@@ -63,6 +63,10 @@ class Plan:
     members: dict[str, list[str]] = field(default_factory=dict)  #: rate group -> members, as rewritten
     file_uplink: bool = False
     sequencers: dict[str, str] = field(default_factory=dict)  #: C++ name -> buffer bytes expression
+    #: F´'s dispatcher's run port where no rate group drives it: it writes
+    #: the dispatcher's telemetry (CommandErrors, CommandsDispatched) only
+    #: there, and fprime-util's template leaves it out (F´'s Ref has it)
+    dispatcher_run: str | None = None
     overrides: dict[str, str] = field(default_factory=dict)  #: config file name -> its text
 
     @property
@@ -93,6 +97,12 @@ def _qualify(expression: str, namespace: str) -> str:
 
 def plan(deployment: Deployment) -> Plan:
     result = Plan(deployment)
+    dispatcher = deployment.patterns.get("command", "cmdDisp")
+    found = deployment.instance(dispatcher)
+    topology = deployment.folder / "Top" / "topology.fpp"
+    if found is not None and found.type == "Svc.CommandDispatcher" and topology.is_file() and not re.search(
+            r"->\s*" + re.escape(dispatcher) + r"\.run\b", topology.read_text()):
+        result.dispatcher_run = f"{dispatcher}.run"
     rate_groups = set(result.rate_group_names)
     for instance in deployment.own:
         if instance.active and instance.name not in rate_groups:
@@ -294,6 +304,23 @@ def tables(result: Plan) -> str:
             + "\n}\n")
 
 
+#: F´'s components that read and write files: a deployment with any of
+#: them gets the kit's RAM file system (without it F´'s file calls fail)
+FILE_USERS = ("Svc.FileUplink", "Svc.FileDownlink", "Svc.FileManager", "Svc.PrmDb", "Svc.CmdSequencer",
+              "Svc.FpySequencer")
+
+
+#: The bulk file a deployment with F´'s file downlink gets (the kit's
+#: default on a small board: app/Kconfig)
+BULK_FILE_BYTES = 2048
+
+
+def file_users(deployment: Deployment) -> list[fpp.Instance]:
+    """The deployment's instances that use files (FILE_USERS)."""
+    instances = [*deployment.own, *(i for group in deployment.subtopologies.values() for i in group)]
+    return [instance for instance in instances if instance.type in FILE_USERS]
+
+
 def deployment_conf(result: Plan, tasks: int, heap: int, text_loggers: bool, fixed_dispatcher: bool) -> str:
     lines = [
         f"# The {result.deployment.name} deployment's Kconfig for the kit (app/Kconfig).",
@@ -320,6 +347,15 @@ def deployment_conf(result: Plan, tasks: int, heap: int, text_loggers: bool, fix
         "# every task) runs on it; the run's KIT STACK lines give its high-water mark",
         f"CONFIG_MAIN_STACK_SIZE={MAIN_STACK}",
     ]
+    users = file_users(result.deployment)
+    if users:
+        lines += [f"# Its file services ({', '.join(i.qualified for i in users)}) on the kit's RAM",
+                  "# file system: fprime-baremetal's MicroFs, files named /bin<b>/file<n> (app/Kconfig)",
+                  "CONFIG_KIT_RAMFS=y"]
+    if any(instance.type == "Svc.FileDownlink" for instance in users):
+        lines += ["# and the bulk file (Kit.RamFs.bulkFile) its file downlink sends in the",
+                  "# serial-load sweep's file axis",
+                  f"CONFIG_KIT_RAMFS_BULK_FILE_SIZE={BULK_FILE_BYTES}"]
     if text_loggers:
         lines += ["# F´'s CdhCore subtopology is built only with F´'s text loggers",
                   "CONFIG_KIT_FPRIME_TEXT_LOGGERS=y"]

@@ -8,7 +8,10 @@ The dispatcher is found, not named: every deployment has one (F´'s
 instance name and module its topology gives it (`Kit.cmdDisp` in the
 reference deployment, `Thermal.cmdDisp` in tests/team/Thermal). It is the one
 instance with F´'s dispatcher's own command, CMD_NO_OP; its events and
-channels are named from it.
+channels are named from it. F´'s file uplink, where a deployment has one, is
+found the same way (`Kit.fileUplink` in the reference, `FileHandling.fileUplink`
+where a deployment takes F´'s FileHandling subtopology): the instance with
+Svc.FileUplink's channels.
 """
 
 from __future__ import annotations
@@ -24,6 +27,8 @@ from kittools.workspace import KitError
 NOOP_COMMAND = "CMD_NO_OP"
 #: ... and the event it answers it with
 NOOP_EVENT = "NoOpReceived"
+#: The channels of F´'s Svc.FileUplink, all of which one instance has
+FILE_UPLINK_CHANNELS = ("FilesReceived", "PacketsReceived", "Warnings")
 
 
 @dataclass(frozen=True)
@@ -73,6 +78,29 @@ class Dictionary:
     @property
     def noop_event(self) -> str:
         return self.of_dispatcher(NOOP_EVENT)
+
+    def owner_of(self, command: str) -> str | None:
+        """The one instance with a command of this own name (F´'s
+        FileDownlink's SendPartial, Health's HLTH_PING_ENABLE), whatever the
+        deployment named it; None where no instance has it, KitError where
+        several do."""
+        owners = sorted(name.removesuffix(f".{command}") for name in self.opcodes if name.endswith(f".{command}"))
+        if len(owners) > 1:
+            raise KitError(f"{self.path}: the ground tools drive one instance with the command {command}, found "
+                           f"{len(owners)}: {', '.join(owners)}")
+        return owners[0] if owners else None
+
+    @property
+    def file_uplink(self) -> str | None:
+        """F´'s file uplink's qualified instance name, e.g. "Kit.fileUplink";
+        None where the deployment (or its board's profile) has none, KitError
+        where it has several (the ground tools feed one)."""
+        found = sorted(owner for owner in {name.rsplit(".", 1)[0] for name in self.channels if "." in name}
+                       if all(f"{owner}.{channel}" in self.channels for channel in FILE_UPLINK_CHANNELS))
+        if len(found) > 1:
+            raise KitError(f"{self.path}: the ground tools feed one file uplink (an instance with the channels "
+                           f"{', '.join(FILE_UPLINK_CHANNELS)}), found {len(found)}: {', '.join(found)}")
+        return found[0] if found else None
 
     def opcode(self, name: str) -> int:
         """A command's opcode; KitError naming the dictionary where it lacks it."""

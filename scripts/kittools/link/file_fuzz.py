@@ -54,6 +54,7 @@ from kittools.link.fuzz import (
     send_closed_by_noop,
     settle,
 )
+from kittools.workspace import KitError
 
 START_FIELDS = struct.Struct(">I")  # file size; then the two length-prefixed paths
 END_FIELDS = struct.Struct(">I")  # CFDP checksum
@@ -78,10 +79,12 @@ KINDS = ("start", "start_bad_destination", "data_next", "data_out_of_order", "da
 # packets that files open, grow and complete between them
 WEIGHTS = (3, 1, 4, 2, 1, 2, 1, 2, 1, 1, 1, 1)
 
-COUNT_CHANNELS = ("Kit.fileUplink.PacketsReceived", "Kit.fileUplink.Warnings", "Kit.fileUplink.FilesReceived",
-                  "Kit.linkHealth.UartRingDrops")
-DECODE_ERROR_EVENT = "Kit.fileUplink.DecodeError"
-FILE_RECEIVED_EVENT = "Kit.fileUplink.FileReceived"
+# The file uplink's counts and events, by its own names (the instance's
+# name is the deployment's: Dictionary.file_uplink), and the link's ring
+FILE_UPLINK_COUNTS = ("PacketsReceived", "Warnings", "FilesReceived")
+RING_DROPS_CHANNEL = "Kit.linkHealth.UartRingDrops"
+DECODE_ERROR = "DecodeError"
+FILE_RECEIVED = "FileReceived"
 # Where a file packet is lost before FileUplink sees it: the link's buffers ran out
 BUFFER_EVENTS = ("Kit.router.AllocationError", "Kit.frameAccumulator.NoBufferAvailable",
                  "Kit.linkBuffers.NoBuffsAvailable")
@@ -223,6 +226,8 @@ def file_packet(kind: str, rng: random.Random, model: FileUplinkModel, scratch: 
 @dataclass
 class Outcome:
     seed: int
+    #: The file uplink's qualified instance name (Dictionary.file_uplink)
+    file_uplink: str
     sent: Counter[str] = field(default_factory=Counter)
     invalid_sent: int = 0
     noops_sent: int = 0
@@ -235,19 +240,26 @@ class Outcome:
     #: READ_OUT batches played at the end (fuzz.read_out)
     read_outs: int = 0
     #: The downlink overflowed during every read-out: the files are counted
-    #: from FileReceived events (FILE_RECEIVED_EVENT)
+    #: from FileReceived events
     read_out_overflowed: bool = False
+
+    def of_uplink(self, name: str) -> str:
+        """A channel or event of the file uplink, by its own name."""
+        return f"{self.file_uplink}.{name}"
+
+    def count_channels(self) -> tuple[str, ...]:
+        return (*(self.of_uplink(name) for name in FILE_UPLINK_COUNTS), RING_DROPS_CHANNEL)
 
     def failures(self) -> list[str]:
         found = []
         checks = [
             ("NO_OPs answered", self.noops_answered, self.noops_sent),
-            ("FileUplink.PacketsReceived", self.telemetry.get("Kit.fileUplink.PacketsReceived"), self.model.packets),
-            ("FileUplink.Warnings", self.telemetry.get("Kit.fileUplink.Warnings"), self.model.warnings),
+            ("FileUplink.PacketsReceived", self.telemetry.get(self.of_uplink("PacketsReceived")), self.model.packets),
+            ("FileUplink.Warnings", self.telemetry.get(self.of_uplink("Warnings")), self.model.warnings),
             self._files_received(),
-            ("FileUplink's DecodeError events", self.events[DECODE_ERROR_EVENT], self.model.decode_errors),
+            ("FileUplink's DecodeError events", self.events[self.of_uplink(DECODE_ERROR)], self.model.decode_errors),
             # Each batch fits the link's buffers and the UART's ring: a loss here is a failure
-            ("LinkHealth.UartRingDrops", self.telemetry.get("Kit.linkHealth.UartRingDrops"), 0),
+            ("LinkHealth.UartRingDrops", self.telemetry.get(RING_DROPS_CHANNEL), 0),
         ]
         for name, got, expected in checks:
             if got != expected:
@@ -267,18 +279,19 @@ class Outcome:
         channels come last each time: mps2/an385 baremetal_passive read
         FilesReceived 169 through three read-outs beside 172 events)."""
         if self.read_out_overflowed:
-            return "FileUplink's FileReceived events", self.events[FILE_RECEIVED_EVENT], self.model.files
-        return "FileUplink.FilesReceived", self.telemetry.get("Kit.fileUplink.FilesReceived"), self.model.files
+            return "FileUplink's FileReceived events", self.events[self.of_uplink(FILE_RECEIVED)], self.model.files
+        return "FileUplink.FilesReceived", self.telemetry.get(self.of_uplink("FilesReceived")), self.model.files
 
     def to_json(self) -> dict[str, Any]:
         model = self.model
+        decode_errors = self.of_uplink(DECODE_ERROR)
         return {"seed": self.seed, "invalid_sent": self.invalid_sent, "sent": dict(sorted(self.sent.items())),
                 "noops_sent": self.noops_sent, "noops_answered": self.noops_answered, "read_outs": self.read_outs,
                 "read_out_overflowed": self.read_out_overflowed,
                 "expected": {"packets": model.packets, "warnings": model.warnings, "files": model.files,
                              "decode_errors": model.decode_errors},
                 "counted": {name.removeprefix("Kit."): value for name, value in sorted(self.telemetry.items())}
-                | {"fileUplink.DecodeError events": self.events[DECODE_ERROR_EVENT]},
+                | {f"{decode_errors.removeprefix('Kit.')} events": self.events[decode_errors]},
                 "buffer_events": {name.removeprefix("Kit."): self.events[name] for name in BUFFER_EVENTS},
                 # every event that came down: a count that differs from the model names its cause here
                 "events": {name.removeprefix("Kit."): count for name, count in sorted(self.events.items())},
@@ -287,8 +300,9 @@ class Outcome:
 
 
 def has_file_uplink(dictionary: Path) -> bool:
-    """The build has F´'s file uplink (its board's profile may leave it out)."""
-    return "Kit.fileUplink.Warnings" in Dictionary.read(dictionary).channels
+    """The build has F´'s file uplink (its deployment, or its board's
+    profile, may leave it out), under whatever instance name its topology gives it."""
+    return Dictionary.read(dictionary).file_uplink is not None
 
 
 def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:
@@ -315,7 +329,10 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
     what the deployment counted beside what its model expects."""
     scratch, noop_opcode = _scratch_and_noop(dictionary)
     rng = random.Random(seed)
-    outcome = Outcome(seed)
+    file_uplink = Dictionary.read(dictionary).file_uplink
+    if file_uplink is None:
+        raise KitError(f"{dictionary}: the deployment has no F´ file uplink to fuzz")
+    outcome = Outcome(seed, file_uplink)
     model = outcome.model
     noop = frame(command(noop_opcode))
     link = Downlink(socket_path, dictionary)
@@ -351,7 +368,8 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
         if outcome.missed:
             settle(link, seed)
         outcome.events = link.events
-        outcome.telemetry = {name: int(link.telemetry[name]) for name in COUNT_CHANNELS if name in link.telemetry}
+        outcome.telemetry = {name: int(link.telemetry[name]) for name in outcome.count_channels()
+                             if name in link.telemetry}
     finally:
         link.close()
     return outcome

@@ -43,7 +43,7 @@ from kittools.link.client import (
 from kittools.link.dictionary import Dictionary
 from kittools.link.fuzz import answered
 from kittools.link.health import HEARTBEAT_CHANNEL, REPLY_TIMEOUT_S, LinkCounts, settled_counts
-from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S
+from kittools.link.serial_points import NOISE, REQUEST_QUIET_S, SEGMENT_ARGUMENTS, SETTLE_S, SegmentClock
 from kittools.workspace import KitError
 
 #: The deployment's seconds of noise at the full line rate
@@ -184,8 +184,10 @@ def run(build: Path) -> Outcome:
 def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: Outcome) -> None:
     """Request the flood's segment on a quiet link, then noise at the full
     line rate until its SWEEP lines are printed."""
+    clock = SegmentClock.of_console(qemu.lines)
+    segment_ticks = clock.ticks(FLOOD_S)  # whole hyperperiods of the deployment's rate groups
     request = frame(command(opcodes["Kit.timing.MEASURE_SEGMENT"],
-                            SEGMENT_ARGUMENTS.pack(NOISE.code, FLOOD_POINT, 100, FLOOD_S * 1000)))
+                            SEGMENT_ARGUMENTS.pack(NOISE.code, FLOOD_POINT, 100, segment_ticks)))
     link.send(request)
     outcome.bytes_sent += len(request)
     outcome.request_bytes = len(request)
@@ -193,12 +195,13 @@ def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: 
     pacer = Stopwatch(link)  # the line paces the noise
     line = Line(link, outcome.baud)
     prefix = f"KIT SWEEP axis={NOISE.name} point={FLOOD_POINT} "
-    # The segment is FLOOD_S long and starts a hyperperiod after the
-    # request: twice that without its lines is a deployment that stopped
-    # (its clock, or the host's when its clock stops)
+    # The segment is about FLOOD_S long and starts at the next hyperperiod
+    # after the request: twice that without its lines is a deployment that
+    # stopped (its clock, or the host's when its clock stops)
+    flood_s = clock.seconds(clock.hyperperiod_ticks + segment_ticks)
     host_deadline = time.monotonic() + FLOOD_HOST_TIMEOUT_S
     samples: list[tuple[float, int]] = []  # (deployment time, bytes the UART read)
-    while pacer.elapsed() < 2 * FLOOD_S and time.monotonic() < host_deadline:
+    while pacer.elapsed() < 2 * flood_s and time.monotonic() < host_deadline:
         outcome.sweep_lines = [line for line in qemu.lines if line.startswith(prefix)]
         if len(outcome.sweep_lines) >= 3 or runner.halt_lines(qemu.lines):
             break

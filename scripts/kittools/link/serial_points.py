@@ -8,6 +8,7 @@ lines) and a sweep's outcome, as serial.json holds it."""
 from __future__ import annotations
 
 import json
+import math
 import random
 import struct
 from dataclasses import asdict, dataclass, field
@@ -16,6 +17,7 @@ from typing import Any
 
 from kittools import console, sweep
 from kittools.link.client import bytes_per_second, noise
+from kittools.workspace import KitError
 
 
 @dataclass(frozen=True)
@@ -31,8 +33,9 @@ class Axis:
 # 1 KiB receive ring holds at each 100 Hz poll (the kit's patch 0003: it took
 # 64 bytes, 355 NO_OP frames of 18 B a second, below a full line); what the
 # ring cannot hold is counted (LinkHealth.UartRingDrops). The downlink's
-# ceiling is the load's: at most Load.DOWNLINK_MAX (16) packets per 100 Hz
-# slice. Noise: percent of the line rate.
+# ceiling is the load's: at most Load.DOWNLINK_MAX (16) packets per slice
+# (the reference's slices run at 100 Hz: downlink_levels says what another
+# deployment's offer). Noise: percent of the line rate.
 UPLINK = Axis("uplink", 0, "cmd/s", (0, 50, 100, 200, 300))
 DOWNLINK = Axis("downlink", 1, "pkt/s", (0, 100, 200, 400, 800, 1600))
 NOISE = Axis("noise", 2, "%", (0, 25, 50, 75, 100))
@@ -50,9 +53,11 @@ AXES = (UPLINK, DOWNLINK, NOISE, FILE)
 FILE_PERIOD_S = 0.25
 #: Each level is played this many times (latencies as median and spread)
 REPEATS = 3
-SLICE_HZ = 100  # Load's slices per second: a downlink level is packets per slice times this
-# One second of measurement per point (ten hyperperiods)
-SEGMENT_TICKS = 1000
+#: Load.DOWNLINK_MAX: the downlink-load packets a slice sends at most
+DOWNLINK_PER_SLICE_MAX = 16
+# About a second of measurement per point: the deployment measures whole
+# hyperperiods of its rate groups (SegmentClock.ticks)
+SEGMENT_S = 1.0
 # The deployment's seconds a new level runs before its segment is requested
 SETTLE_S = 0.3
 # Valid NO_OPs a second among the noise: what a noisy line still delivers.
@@ -162,13 +167,64 @@ def records_of(path: Path) -> list[console.Record]:
     return _records(json.loads(path.read_text())["lines"])
 
 
-#: How long a point's traffic lasts, in the deployment's time: the settling
-#: before the request (less the quiet before it), the hyperperiod the
-#: deployment waits after it, and the segment. A fixed amount of traffic per
-#: point, whatever the host's timing: what each level offers is the same in
-#: every run.
-HYPERPERIOD_S = 0.1
-POINT_S = SETTLE_S - REQUEST_QUIET_S + HYPERPERIOD_S + SEGMENT_TICKS / 1000
+def downlink_levels(slice_hz: int) -> list[tuple[int, int]]:
+    """The downlink axis where the load's slices run at `slice_hz` (the
+    rate of the group the deployment gives Load.sliceIn): each level as
+    (packets a second offered, packets per slice), at the packets per slice
+    nearest the axis' level, at most DOWNLINK_PER_SLICE_MAX; a level that
+    would offer what the one before it did is left out. The reference's 100
+    Hz slices offer the axis' levels as they are."""
+    levels: list[tuple[int, int]] = []
+    for level in DOWNLINK.levels:
+        per_slice = min(DOWNLINK_PER_SLICE_MAX, math.floor(level / slice_hz + 0.5))
+        if not levels or per_slice * slice_hz > levels[-1][0]:
+            levels.append((per_slice * slice_hz, per_slice))
+    return levels
+
+
+@dataclass(frozen=True)
+class SegmentClock:
+    """The deployment's rate-group tick and hyperperiod (its BANNER line:
+    tick_hz, hyperperiod_ticks). A segment it measures is a whole number of
+    hyperperiods (Timing refuses any other length) and starts at the next
+    one after its request."""
+
+    tick_hz: int
+    hyperperiod_ticks: int
+
+    def ticks(self, seconds: float) -> int:
+        """The whole number of hyperperiods nearest `seconds`, at least one, in ticks."""
+        periods = max(1, math.floor(seconds * self.tick_hz / self.hyperperiod_ticks + 0.5))
+        return periods * self.hyperperiod_ticks
+
+    def seconds(self, ticks: int) -> float:
+        return ticks / self.tick_hz
+
+    def segment_ticks(self) -> int:
+        """A point's segment (about SEGMENT_S)."""
+        return self.ticks(SEGMENT_S)
+
+    def point_s(self) -> float:
+        """How long a point's traffic lasts, in the deployment's time: the
+        settling before the request (less the quiet before it), the
+        hyperperiod the deployment may wait after it, and the segment. A
+        fixed amount of traffic per point, whatever the host's timing: what
+        each level offers is the same in every run."""
+        return (SETTLE_S - REQUEST_QUIET_S + self.seconds(self.hyperperiod_ticks)
+                + self.seconds(self.segment_ticks()))
+
+    @staticmethod
+    def of_console(lines: list[str]) -> SegmentClock:
+        """From a booted build's BANNER line; a build of a kit older than
+        hyperperiod_ticks is an error."""
+        banner = next((r for line in lines if (r := console.parse_line(line)) is not None and r.kind == "BANNER"),
+                      None)
+        fields = banner.fields if banner is not None else {}
+        try:
+            return SegmentClock(int(fields["tick_hz"]), int(fields["hyperperiod_ticks"]))
+        except (KeyError, ValueError):
+            raise KitError(f"the firmware's BANNER line gives no tick_hz and hyperperiod_ticks "
+                           f"({fields or 'no line'}): a build of an older kit; rebuild it") from None
 
 
 def traffic_time(elapsed: float) -> float:
@@ -218,13 +274,15 @@ class Schedule:
 class Offer:
     """A point's traffic: a command's frame (a NO_OP; the file axis'
     SendPartial) at `commands_per_s`, and noise (bytes that frame nothing)
-    at `noise_per_s` with its commands among it, POINT_S of the
-    deployment's time of each (a Line carries them at the line rate)."""
+    at `noise_per_s` with its commands among it, `point_s` of the
+    deployment's time of each (SegmentClock.point_s; a Line carries them at
+    the line rate)."""
 
-    def __init__(self, command_frame: bytes, commands_per_s: float, noise_per_s: float = 0.0, seed: int = 0) -> None:
+    def __init__(self, command_frame: bytes, point_s: float, commands_per_s: float, noise_per_s: float = 0.0,
+                 seed: int = 0) -> None:
         self.command_frame = command_frame
-        self._commands = Schedule(commands_per_s, int(commands_per_s * POINT_S))
-        self._noise = Schedule(noise_per_s, int(noise_per_s * POINT_S))
+        self._commands = Schedule(commands_per_s, int(commands_per_s * point_s))
+        self._noise = Schedule(noise_per_s, int(noise_per_s * point_s))
         self._rng = random.Random(seed)
 
     def due(self, elapsed: float, traffic: PointTraffic) -> bytes:

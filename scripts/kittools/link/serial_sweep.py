@@ -41,6 +41,7 @@ kittools.link.serial_points, LinkHealth's counts kittools.link.health.
 
 from __future__ import annotations
 
+import math
 import struct
 import time
 from pathlib import Path
@@ -69,14 +70,14 @@ from kittools.link.serial_points import (
     REPEATS,
     REQUEST_QUIET_S,
     SEGMENT_ARGUMENTS,
-    SEGMENT_TICKS,
     SETTLE_S,
-    SLICE_HZ,
     UPLINK,
     Axis,
     Offer,
     Outcome,
     PointTraffic,
+    SegmentClock,
+    downlink_levels,
     file_request,
     full_line_commands,
     noise_per_second,
@@ -85,6 +86,10 @@ from kittools.link.serial_points import (
 from kittools.workspace import KitError
 
 DOWNLINK_PACKET_EVENT = "Kit.load.DownlinkLoadPacket"
+# Written at every slice the load runs (no burst in the ground scenario):
+# its count over the deployment's time is the slices' rate
+SLICES_CHANNEL = "Kit.load.Processed"
+SLICES_SAMPLE_S = 1.0
 # The wait for a segment after a request, before it is sent again
 REQUEST_RETRY_S = 1.0
 U32 = struct.Struct(">I")
@@ -111,9 +116,14 @@ class Driver:
         self.qemu = qemu
         self.link = link
         self.baud = baud
+        self.clock = SegmentClock.of_console(qemu.lines)
         self.opcodes = opcodes
         self.noop = frame(command(link.dictionary.noop_opcode))
         self.noop_event = link.dictionary.noop_event
+
+    def offer(self, command_frame: bytes, commands_per_s: float, noise_per_s: float = 0.0, seed: int = 0) -> Offer:
+        """A point's traffic, as long as this deployment's points last."""
+        return Offer(command_frame, self.clock.point_s(), commands_per_s, noise_per_s, seed)
 
     def send(self, name: str, arguments: bytes = b"") -> None:
         self.link.send(frame(command(self.opcodes[name], arguments)))
@@ -140,6 +150,21 @@ class Driver:
         if not self.link.pump(quiet, REPLY_TIMEOUT_S):
             raise KitError(f"the file downlink was still sending {REPLY_TIMEOUT_S:.0f} s after a file point")
 
+    def slice_hz(self) -> int:
+        """The load's slices a second over SLICES_SAMPLE_S of the
+        deployment's idle time: the rate of the group that runs them (the
+        deployment's choice), which a downlink level's packets per slice
+        are set from. A count and its time tag are written together, so the
+        rate is exact to a slice."""
+        telemetry, times = self.link.telemetry, self.link.telemetry_time
+        if not self.link.pump(lambda: SLICES_CHANNEL in telemetry, REPLY_TIMEOUT_S):
+            raise KitError(f"no {SLICES_CHANNEL} on the downlink in {REPLY_TIMEOUT_S:.0f} s: "
+                           "is it a kit build of this version?")
+        count, at = int(telemetry[SLICES_CHANNEL]), times[SLICES_CHANNEL]
+        if not self.link.pump(lambda: times[SLICES_CHANNEL] >= at + SLICES_SAMPLE_S, REPLY_TIMEOUT_S):
+            raise KitError(f"{SLICES_CHANNEL} did not move on the downlink in {REPLY_TIMEOUT_S:.0f} s")
+        return max(1, math.floor((int(telemetry[SLICES_CHANNEL]) - count) / (times[SLICES_CHANNEL] - at) + 0.5))
+
     def newest_packet(self) -> int:
         """The number of the newest downlink-load packet received (-1: none yet)."""
         return int(str(self.link.event_args.get(DOWNLINK_PACKET_EVENT, (-1,))[0]))
@@ -161,7 +186,10 @@ class Driver:
         # ring): the traffic pauses just before it, and it is sent again if
         # no segment followed
         request_at = SETTLE_S
-        deadline = time.monotonic() + REPLY_TIMEOUT_S + SEGMENT_TICKS / 1000
+        segment_ticks = self.clock.segment_ticks()
+        # The segment starts at the next hyperperiod after its request
+        segment_s = self.clock.seconds(self.clock.hyperperiod_ticks + segment_ticks)
+        deadline = time.monotonic() + REPLY_TIMEOUT_S + segment_s
         while len(self.sweep_lines(axis, traffic.point)) < 3 or not offer.complete() or line.waiting():
             if time.monotonic() > deadline:
                 raise KitError(f"no SWEEP lines for {axis.name} point {traffic.point}:\n"
@@ -176,13 +204,13 @@ class Driver:
             if elapsed >= request_at and not self.sweep_lines(axis, traffic.point):
                 request = frame(command(self.opcodes["Kit.timing.MEASURE_SEGMENT"],
                                         SEGMENT_ARGUMENTS.pack(axis.code, traffic.point, traffic.level,
-                                                               SEGMENT_TICKS)))
+                                                               segment_ticks)))
                 # On the line behind what it carries (a frame the line has
                 # split must not be cut by another)
                 line.put(request)
                 traffic.bytes_sent += len(request)
                 traffic.requests += 1
-                request_at = elapsed + SEGMENT_TICKS / 1000 + REQUEST_RETRY_S
+                request_at = elapsed + segment_s + REQUEST_RETRY_S
             self.link.pump(lambda: False, LINE_STEP_S)
             self.qemu.read_until(lambda _: False, CONSOLE_PEEK_S)
         if unload:
@@ -222,7 +250,8 @@ class Driver:
 # point 33, both models). So, as an operator would before flooding the event service, the
 # sweep has health stop pinging it for the axis (F´'s HLTH_PING_ENABLE) and
 # ping it again after; docs/design.md says why.
-EVENTS_PING_ENTRY = "Kit_eventsPing"
+#: Svc.EventManager's command: its owner is the event service
+EVENTS_COMMAND = "SET_ID_FILTER"
 ENTRY_LENGTH = struct.Struct(">H")  # FwSizeStoreType, a string argument's length
 ENABLED = struct.Struct(">B")  # Fw.Enabled
 
@@ -233,13 +262,22 @@ def string_argument(text: str) -> bytes:
     return ENTRY_LENGTH.pack(len(data)) + data
 
 
-def ping_enable(opcodes: dict[str, int], entry: str, enabled: bool) -> bytes | None:
-    """The frame of health's HLTH_PING_ENABLE for `entry`, or None where
-    the build has no health (its deployment, or its board's profile, leaves it out)."""
-    opcode = opcodes.get("Kit.health.HLTH_PING_ENABLE")
-    if opcode is None:
-        return None
-    return frame(command(opcode, string_argument(entry) + ENABLED.pack(int(enabled))))
+def ping_enable(names: Dictionary, enabled: bool) -> bytes:
+    """The frames of health's HLTH_PING_ENABLE for the event service's ping
+    entries, or nothing where the build has no health (its deployment, or
+    its board's profile, leaves it out). An entry is named after the
+    instance health pings, F´'s way ("CdhCore_events" for CdhCore.events);
+    the reference deployment pings its event service through a probe (the
+    entry "Kit_eventsPing"). Health refuses the name it does not have with
+    its lookup-error event, and pings on."""
+    health = names.owner_of("HLTH_PING_ENABLE")
+    events = names.owner_of(EVENTS_COMMAND)
+    if health is None or events is None:
+        return b""
+    entry = events.replace(".", "_")
+    return b"".join(frame(command(names.opcodes[f"{health}.HLTH_PING_ENABLE"],
+                                  string_argument(name) + ENABLED.pack(int(enabled))))
+                    for name in (entry, f"{entry}Ping"))
 
 
 def run(build: Path, repeats: int = REPEATS) -> Outcome:
@@ -259,45 +297,47 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
             if not link.pump(lambda: link.now > 0, REPLY_TIMEOUT_S):
                 raise KitError(f"{build}: no downlink within {REPLY_TIMEOUT_S:.0f} s")
             points = iter(range(1 << 30))
+            slice_hz = driver.slice_hz()
             uplink_levels = (*UPLINK.levels, full_line_commands(baud, driver.noop))
             for level in uplink_levels:
                 for repeat in range(repeats):
                     traffic = PointTraffic(UPLINK.name, next(points), level, repeat)
-                    outcome.lines += driver.measure(UPLINK, traffic, Offer(driver.noop, float(level)))
+                    outcome.lines += driver.measure(UPLINK, traffic, driver.offer(driver.noop, float(level)))
                     outcome.traffic.append(traffic)
             # The dispatcher runs commands in order: the new level is set
             # before the segment is requested (no wait for its event, which a
             # flooded events queue may drop)
             unload = frame(command(opcodes["Kit.load.SET_DOWNLINK"], U32.pack(0)))
-            stop_pinging = ping_enable(opcodes, EVENTS_PING_ENTRY, enabled=False)
-            if stop_pinging is not None:
+            stop_pinging = ping_enable(names, enabled=False)
+            if stop_pinging:
                 link.send(stop_pinging)
-            for level in DOWNLINK.levels:
+            for level, per_slice in downlink_levels(slice_hz):
                 for repeat in range(repeats):
                     traffic = PointTraffic(DOWNLINK.name, next(points), level, repeat)
                     received_before = link.events[DOWNLINK_PACKET_EVENT]
                     newest_before = driver.newest_packet()
-                    load = frame(command(opcodes["Kit.load.SET_DOWNLINK"], U32.pack(level // SLICE_HZ)))
+                    load = frame(command(opcodes["Kit.load.SET_DOWNLINK"], U32.pack(per_slice)))
                     link.send(load)
                     traffic.bytes_sent += len(load)
-                    outcome.lines += driver.measure(DOWNLINK, traffic, Offer(driver.noop, 0.0), unload)
+                    outcome.lines += driver.measure(DOWNLINK, traffic, driver.offer(driver.noop, 0.0), unload)
                     traffic.packets_received = link.events[DOWNLINK_PACKET_EVENT] - received_before
                     # Packets are numbered: those between the newest before the
                     # point and the newest after it that never arrived were lost
                     traffic.packets_lost = driver.newest_packet() - newest_before - traffic.packets_received
                     outcome.traffic.append(traffic)
-            ping_again = ping_enable(opcodes, EVENTS_PING_ENTRY, enabled=True)
-            if ping_again is not None:
+            ping_again = ping_enable(names, enabled=True)
+            if ping_again:
                 link.send(ping_again)
             for level in NOISE.levels:
                 for repeat in range(repeats):
                     traffic = PointTraffic(NOISE.name, next(points), level, repeat)
-                    offer = Offer(driver.noop, NOISE_NOOP_RATE, noise_per_second(baud, driver.noop, level),
+                    offer = driver.offer(driver.noop, NOISE_NOOP_RATE, noise_per_second(baud, driver.noop, level),
                                   NOISE_SEED + traffic.point)
                     outcome.lines += driver.measure(NOISE, traffic, offer)
                     outcome.traffic.append(traffic)
-            send_partial = opcodes.get("Kit.fileDownlink.SendPartial")
-            if send_partial is not None:
+            file_downlink = names.owner_of("SendPartial")  # F´'s FileDownlink, whatever its instance's name
+            if file_downlink is not None:
+                send_partial = opcodes[f"{file_downlink}.SendPartial"]
                 bulk = str(names.constant(BULK_FILE_CONSTANT))
                 file_bytes = driver.fill_bulk_file(bulk)
                 for level in (*FILE.levels, int(bytes_per_second(baud))):
@@ -307,7 +347,7 @@ def run(build: Path, repeats: int = REPEATS) -> Outcome:
                     for repeat in range(repeats):
                         traffic = PointTraffic(FILE.name, next(points), level, repeat)
                         received_before = link.file_bytes
-                        outcome.lines += driver.measure(FILE, traffic, Offer(request, per_s))
+                        outcome.lines += driver.measure(FILE, traffic, driver.offer(request, per_s))
                         driver.file_quiet()
                         traffic.file_bytes_asked = traffic.commands_sent * part
                         traffic.file_bytes_received = link.file_bytes - received_before
