@@ -35,19 +35,28 @@ def _absent(service: str) -> None:
                 "leaves it out")
 
 
-def _services(api: Any, command: str) -> None:
-    """Skips a test of F´'s health and version services on a build whose
-    deployment or board profile leaves them out (CONFIG_KIT_SERVICE_CDH: its dictionary
-    has neither; the firmware's record says KIT HEALTH services=absent)."""
-    if command not in api.dictionaries.command_name:
-        _absent("health and version services")
+def _names(api: Any) -> Dictionary:
+    return Dictionary.read(Path(api.dictionaries.dictionary_path))
+
+
+def _service(api: Any, command: str, service: str) -> str:
+    """The deployment's instance of an F´ service, found by a command of its
+    own (kittools.link.dictionary), whatever its topology names it: the
+    reference's Kit.version, F´'s CdhCore.version in a deployment that takes
+    F´'s CdhCore. Skips the test on a build whose deployment or board
+    profile leaves the service out (CONFIG_KIT_SERVICE_CDH: the firmware's
+    record says KIT HEALTH services=absent)."""
+    owner = _names(api).owner_of(command)
+    if owner is None:
+        _absent(service)
+    return str(owner)
 
 
 def _dispatcher(api: Any, name: str) -> str:
     """A command, event or channel of the deployment's command dispatcher,
     by its own name: the dispatcher is found in the dictionary (the owner of
     CMD_NO_OP, kittools.link.dictionary), whatever its topology names it."""
-    return Dictionary.read(Path(api.dictionaries.dictionary_path)).of_dispatcher(name)
+    return _names(api).of_dispatcher(name)
 
 
 def _reference_component(api: Any, command: str) -> None:
@@ -102,22 +111,22 @@ def test_telemetry_every_tenth_of_a_second(fprime_test_api: Any) -> None:
 
 
 def test_version_reported_on_command(fprime_test_api: Any) -> None:
-    _services(fprime_test_api, "Kit.version.VERSION")
-    fprime_test_api.send_and_assert_command("Kit.version.VERSION", ["FRAMEWORK"], max_delay=TIMEOUT_S)
-    fprime_test_api.assert_event("Kit.version.FrameworkVersion", timeout=TIMEOUT_S)
-    fprime_test_api.send_and_assert_command("Kit.version.VERSION", ["PROJECT"], max_delay=TIMEOUT_S)
-    fprime_test_api.assert_event("Kit.version.ProjectVersion", timeout=TIMEOUT_S)
+    version = _service(fprime_test_api, "VERSION", "version service")
+    fprime_test_api.send_and_assert_command(f"{version}.VERSION", ["FRAMEWORK"], max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event(f"{version}.FrameworkVersion", timeout=TIMEOUT_S)
+    fprime_test_api.send_and_assert_command(f"{version}.VERSION", ["PROJECT"], max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event(f"{version}.ProjectVersion", timeout=TIMEOUT_S)
 
 
 def test_health_checks_without_warning_at_rest(fprime_test_api: Any) -> None:
     """Health's checking, turned on again from the ground, pings every entry
     each 10 Hz cycle; at rest no entry is late (HLTH_PING_WARN) over 20
     cycles, with the link busy with this test's commands and telemetry."""
-    _services(fprime_test_api, "Kit.health.HLTH_ENABLE")
-    fprime_test_api.send_and_assert_command("Kit.health.HLTH_ENABLE", ["ENABLED"], max_delay=TIMEOUT_S)
-    fprime_test_api.assert_event("Kit.health.HLTH_CHECK_ENABLE", ["ENABLED"], timeout=TIMEOUT_S)
+    health = _service(fprime_test_api, "HLTH_ENABLE", "health service")
+    fprime_test_api.send_and_assert_command(f"{health}.HLTH_ENABLE", ["ENABLED"], max_delay=TIMEOUT_S)
+    fprime_test_api.assert_event(f"{health}.HLTH_CHECK_ENABLE", ["ENABLED"], timeout=TIMEOUT_S)
     time.sleep(HEALTH_WATCH_S)
-    fprime_test_api.assert_event_count(0, "Kit.health.HLTH_PING_WARN")
+    fprime_test_api.assert_event_count(0, f"{health}.HLTH_PING_WARN")
 
 
 # A warm restart's answer, the restart (RESTART_DELAY_CYCLES of the 10 Hz
@@ -281,8 +290,7 @@ def _bulk_file(api: Any, seed: int) -> tuple[str, int]:
     `seed` (Load.FILL_FILE, asked for more than any board's bulk file
     holds); returns its name and the bytes it holds. Skips a test on a build
     whose board profile leaves the file downlink out."""
-    if "Kit.fileDownlink.SendFile" not in api.dictionaries.command_name:
-        _absent("file downlink")
+    _service(api, "SendFile", "file downlink")
     bulk = str(api.dictionaries.constant_name["Kit.RamFs.bulkFile"])
     api.send_and_assert_command("Kit.load.FILL_FILE", [bulk, FILL_ASK_BYTES, seed], max_delay=TIMEOUT_S)
     filled = api.assert_event("Kit.load.FileFilled", timeout=TIMEOUT_S)
@@ -294,8 +302,9 @@ def _bulk_file(api: Any, seed: int) -> tuple[str, int]:
 def _downlinked(api: Any, source: str, size: int, destination: str) -> bytes:
     """Sends `source` to the ground (Svc.FileDownlink's SendFile); returns
     what fprime-gds's downlinker wrote, once it holds `size` bytes."""
-    api.send_and_assert_command("Kit.fileDownlink.SendFile", [source, destination], max_delay=DOWNLINK_S)
-    api.assert_event("Kit.fileDownlink.FileSent", timeout=TIMEOUT_S)
+    downlink = _service(api, "SendFile", "file downlink")
+    api.send_and_assert_command(f"{downlink}.SendFile", [source, destination], max_delay=DOWNLINK_S)
+    api.assert_event(f"{downlink}.FileSent", timeout=TIMEOUT_S)
     received = Path(api.pipeline.down_store) / destination
     deadline = time.monotonic() + WRITTEN_S
     while time.monotonic() < deadline and (not received.is_file() or received.stat().st_size < size):
@@ -328,11 +337,14 @@ UPLINK_SEED = 0x55504C4B
 UPLINK_S = 60
 
 
-def _file_uplink(api: Any) -> None:
-    """Skips a test of the file uplink on a build whose board profile leaves
-    it out (CONFIG_KIT_SERVICE_FILE_UPLINK)."""
-    if "Kit.fileUplink.FilesReceived" not in api.dictionaries.channel_name:
+def _file_uplink(api: Any) -> str:
+    """The deployment's file uplink (the instance with Svc.FileUplink's
+    channels); skips a test of it on a build whose deployment or board
+    profile leaves it out (CONFIG_KIT_SERVICE_FILE_UPLINK)."""
+    uplink = _names(api).file_uplink
+    if uplink is None:
         _absent("file uplink")
+    return str(uplink)
 
 
 def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> None:
@@ -341,14 +353,14 @@ def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> No
     back through the file downlink with every byte as sent: the round trip
     checks what the uplink wrote, not what the ground believes it sent."""
     api = fprime_test_api
-    _file_uplink(api)
+    uplink = _file_uplink(api)
     bulk, size = _bulk_file(api, FILL_SEED)
     sent = pattern(UPLINK_SEED, size)
     source = tmp_path / f"kit-up-{size}.bin"
     source.write_bytes(sent)
     api.uplink_file(str(source), bulk)
-    api.assert_event("Kit.fileUplink.FileReceived", timeout=UPLINK_S)
-    api.assert_event_count(0, "Kit.fileUplink.BadChecksum")
+    api.assert_event(f"{uplink}.FileReceived", timeout=UPLINK_S)
+    api.assert_event_count(0, f"{uplink}.BadChecksum")
     data = _downlinked(api, bulk, size, f"kit-roundtrip-{size}.bin")
     mismatch = _first_difference(data, sent)
     assert len(data) == size and mismatch is None, f"{len(data)} B of {size}, first difference at byte {mismatch}"
@@ -394,7 +406,7 @@ def _uplink(api: Any, tmp_path: Path, name: str, data: bytes, destination: str) 
     source = tmp_path / name
     source.write_bytes(data)
     api.uplink_file(str(source), destination)
-    api.assert_event("Kit.fileUplink.FileReceived", timeout=UPLINK_S)
+    api.assert_event(f"{_file_uplink(api)}.FileReceived", timeout=UPLINK_S)
 
 
 def test_sequence_uplinked_and_run(fprime_test_api: Any, tmp_path: Path) -> None:
