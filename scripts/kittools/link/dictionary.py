@@ -61,7 +61,11 @@ class Dictionary:
     def dispatcher(self) -> str:
         """The dispatcher's qualified instance name, e.g. "Kit.cmdDisp";
         KitError where the dictionary has none, or several."""
-        return dispatcher_of(self.path, self.opcodes)
+        found = self.owner_of(NOOP_COMMAND)
+        if found is None:
+            raise KitError(f"{self.path}: the ground tools need a command dispatcher (the instance with "
+                           f"{NOOP_COMMAND}), found none")
+        return found
 
     def of_dispatcher(self, name: str) -> str:
         """A command, event or channel of the dispatcher, by its own name."""
@@ -115,12 +119,3 @@ class Dictionary:
             raise KitError(f"{self.path} has no {kind} {name}: is it a dictionary of a kit build of this version?")
         return table[name]
 
-
-def dispatcher_of(path: Path, opcodes: dict[str, int]) -> str:
-    """The instance owning CMD_NO_OP; KitError where none or several do."""
-    owners = sorted(name.removesuffix(f".{NOOP_COMMAND}") for name in opcodes if name.endswith(f".{NOOP_COMMAND}"))
-    if len(owners) != 1:
-        found = f"{len(owners)}: {', '.join(owners)}" if owners else "none"
-        raise KitError(f"{path}: the ground tools need exactly one command dispatcher (the instance with "
-                       f"{NOOP_COMMAND}), found {found}")
-    return owners[0]

@@ -44,7 +44,7 @@ from kittools.link.client import (
     command,
     frame,
 )
-from kittools.link.dictionary import Dictionary
+from kittools.link.dictionary import FILE_UPLINK_CHANNELS, Dictionary
 from kittools.link.fuzz import (
     DOWNLINK_OVERFLOW_EVENT,
     MISSED_ANSWERS_MAX,
@@ -79,9 +79,9 @@ KINDS = ("start", "start_bad_destination", "data_next", "data_out_of_order", "da
 # packets that files open, grow and complete between them
 WEIGHTS = (3, 1, 4, 2, 1, 2, 1, 2, 1, 1, 1, 1)
 
-# The file uplink's counts and events, by its own names (the instance's
-# name is the deployment's: Dictionary.file_uplink), and the link's ring
-FILE_UPLINK_COUNTS = ("PacketsReceived", "Warnings", "FilesReceived")
+# The file uplink's events, by their own names (the instance's name is the
+# deployment's: Dictionary.file_uplink; its counts are FILE_UPLINK_CHANNELS),
+# and the link's ring
 RING_DROPS_CHANNEL = "Kit.linkHealth.UartRingDrops"
 DECODE_ERROR = "DecodeError"
 FILE_RECEIVED = "FileReceived"
@@ -248,7 +248,7 @@ class Outcome:
         return f"{self.file_uplink}.{name}"
 
     def count_channels(self) -> tuple[str, ...]:
-        return (*(self.of_uplink(name) for name in FILE_UPLINK_COUNTS), RING_DROPS_CHANNEL)
+        return (*(self.of_uplink(name) for name in FILE_UPLINK_CHANNELS), RING_DROPS_CHANNEL)
 
     def failures(self) -> list[str]:
         found = []
@@ -305,11 +305,6 @@ def has_file_uplink(dictionary: Path) -> bool:
     return Dictionary.read(dictionary).file_uplink is not None
 
 
-def _scratch_and_noop(dictionary: Path) -> tuple[str, int]:
-    names = Dictionary.read(dictionary)
-    return str(names.constant(SCRATCH_CONSTANT)), names.noop_opcode
-
-
 # FileUplink writes its counts (telemetry) when they change, and TlmChan
 # sends a channel once per write: a write lost where the downlink's
 # telemetry queue overflows under the fuzzer's bursts (ComQueue's
@@ -327,14 +322,14 @@ def run(socket_path: Path, dictionary: Path, seed: int, invalid_packets: int,
     """Send file packets until `invalid_packets` of them are ones FileUplink
     must refuse, PER_BATCH at a time, each batch closed by a NO_OP; return
     what the deployment counted beside what its model expects."""
-    scratch, noop_opcode = _scratch_and_noop(dictionary)
-    rng = random.Random(seed)
-    file_uplink = Dictionary.read(dictionary).file_uplink
-    if file_uplink is None:
+    names = Dictionary.read(dictionary)
+    if names.file_uplink is None:
         raise KitError(f"{dictionary}: the deployment has no F´ file uplink to fuzz")
-    outcome = Outcome(seed, file_uplink)
+    scratch = str(names.constant(SCRATCH_CONSTANT))
+    rng = random.Random(seed)
+    outcome = Outcome(seed, names.file_uplink)
     model = outcome.model
-    noop = frame(command(noop_opcode))
+    noop = frame(command(names.noop_opcode))
     link = Downlink(socket_path, dictionary)
     try:
         after_boot_burst(link, seed)

@@ -215,8 +215,9 @@ def _flood(link: Downlink, qemu: runner.Qemu, opcodes: dict[str, int], outcome: 
         link.pump(lambda: False, LINE_STEP_S)
         qemu.read_until(lambda _: False, CONSOLE_PEEK_S)
     outcome.seconds = pacer.elapsed()
-    # The rate over the flood's second half: its start is the request's and
+    # The rate over the segment's second half: its start is the request's and
     # the first bytes' way in
-    settled = [s for s in samples if s[0] >= samples[-1][0] - FLOOD_S / 2] if samples else []
+    half_segment_s = clock.seconds(segment_ticks) / 2
+    settled = [s for s in samples if s[0] >= samples[-1][0] - half_segment_s] if samples else []
     if len(settled) >= 2 and settled[-1][0] > settled[0][0]:
         outcome.received_per_s = (settled[-1][1] - settled[0][1]) / (settled[-1][0] - settled[0][0])
