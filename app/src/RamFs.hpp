@@ -11,6 +11,9 @@
 #define KIT_RAMFS_HPP
 
 #include <Fw/FPrimeBasicTypes.hpp>
+// Kit.RamFs: its files' names (the parameter file, the scratch and bulk
+// files), constants of the kit's instruments (every deployment has them)
+#include "app/Subtopologies/Instruments/FppConstantsAc.hpp"
 
 namespace Kit {
 namespace RamFs {

@@ -68,6 +68,12 @@ def test_adapts_the_template_once(tmp_path: Path, driver: str) -> None:
     # The template's ChronoTime is OsTime, which counts from the epoch set at
     # setup (without it every event and channel carries time zero)
     assert "MyDeployment::chronoTime.set_epoch(Fw::Time(0, 0), now);" in table
+    # FileHandling's parameter file is one MicroFs has, set between its
+    # configuration phase and the parameters' load
+    configured = table.index("FileHandling::prmDb.configure(RamFs::parameterFile);")
+    assert "configComponents(state);\n    configureTopology(state);\n    MyDeployment::loadParameters();" in table
+    assert table.index("void configureTopology") < configured < table.index("void setupTopology")
+    assert any("FileHandling.prmDb" in change for change in record.changes), record.changes
     assert "Kit.FatalHandler" in (folder / "config" / "CdhCoreFatalHandlerConfig.fpp").read_text()
     # F´'s FileHandling and the sequencer get the kit's RAM file system (without it every file call fails)
     conf = (folder / "deployment.conf").read_text()

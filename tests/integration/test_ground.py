@@ -136,12 +136,35 @@ RESTART_S = 10
 
 def _parameter_file(api: Any) -> str:
     """The parameter database's file on the RAM file system (a dictionary
-    constant); skips a test of the database on a build whose board profile
-    leaves it out (CONFIG_KIT_SERVICE_PARAMS: the record says KIT RAMFS
-    mount=absent)."""
+    constant); skips a test of the reference's database on a build whose
+    board profile leaves it out (CONFIG_KIT_SERVICE_PARAMS: the record says
+    KIT RAMFS mount=absent) and on another deployment's build."""
     if "Kit.prmDb.PRM_SAVE_FILE" not in api.dictionaries.command_name:
-        _absent("parameter database")
+        database = _service(api, "PRM_SAVE_FILE", "parameter database")
+        pytest.skip(f"this test drives the reference deployment's database and controller (Kit.prmDb, "
+                    f"Kit.controller); this deployment's database, {database}, is tested by "
+                    "test_parameter_database_saves_and_loads_its_file")
     return str(api.dictionaries.constant_name["Kit.RamFs.parameterFile"])
+
+
+def test_parameter_database_saves_and_loads_its_file(fprime_test_api: Any) -> None:
+    """The deployment's parameter database, whatever its topology names it
+    (the reference's Kit.prmDb, F´'s FileHandling.prmDb), writes its file on
+    the RAM file system and reads back as many records as it wrote: its file
+    is one the file system has (F´'s FileHandling names it PrmDb.dat, which
+    MicroFs has not: kit new-deployment configures it again with
+    Kit.RamFs.parameterFile)."""
+    api = fprime_test_api
+    prm_db = _service(api, "PRM_SAVE_FILE", "parameter database")
+    parameter_file = str(api.dictionaries.constant_name["Kit.RamFs.parameterFile"])
+    api.send_and_assert_command(f"{prm_db}.PRM_SAVE_FILE", max_delay=TIMEOUT_S)
+    saved = api.assert_event(f"{prm_db}.PrmFileSaveComplete", timeout=TIMEOUT_S)
+    records = int(saved.get_args()[0].val)
+    api.send_and_assert_command(f"{prm_db}.PRM_LOAD_FILE", [parameter_file, "RESET"], max_delay=TIMEOUT_S)
+    api.assert_event(f"{prm_db}.PrmFileLoadComplete", ["STAGING", records, records, 0], timeout=TIMEOUT_S)
+    # What it staged is what it holds: committed, nothing changes
+    api.send_and_assert_command(f"{prm_db}.PRM_COMMIT_STAGED", max_delay=TIMEOUT_S)
+    api.assert_event(f"{prm_db}.PrmDbCommitComplete", timeout=TIMEOUT_S)
 
 
 def _gains(api: Any) -> tuple[int, int]:

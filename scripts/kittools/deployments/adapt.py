@@ -354,11 +354,11 @@ def new_deployment(folder: Path, fastest_hz: Fraction | None = None) -> Record:
         record.changes.append(f"Top/topology.fpp: {plan.dispatcher_run} in rate group "
                               f"{deployment.rate_groups[uplink_group(plan)].name}, as F´'s Ref has it: the "
                               "dispatcher writes its telemetry (CommandErrors, CommandsDispatched) only there")
-    if "FileHandling" in deployment.subtopologies:
-        record.todo.append("F´'s FileHandling names the parameter database's file PrmDb.dat, a name the kit's RAM "
-                           "file system (MicroFs: /bin<b>/file<n>) does not have: the database starts with its "
-                           "defaults and PRM_SAVE_FILE fails until it is configured with Kit.RamFs.parameterFile "
-                           "(the reference's app/Top/instances.fpp)")
+    if "Top/KitTopology.cpp" not in record.kept:  # written this run
+        for instance in cpp.fixed_parameter_files(deployment):
+            record.changes.append(f"Top/KitTopology.cpp: {instance.qualified} configured again with "
+                                  "Kit.RamFs.parameterFile before the parameters load: F´'s FileHandling names its "
+                                  "file PrmDb.dat, which the kit's RAM file system (MicroFs: /bin<b>/file<n>) has not")
     return record
 
 

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+from kittools.deployments import fpp
 from kittools.deployments.seam import Plan
-from kittools.deployments.template import HOST_CLOCKS
+from kittools.deployments.template import HOST_CLOCKS, Deployment
 
 
 def _period(period: Fraction) -> tuple[int, int]:
@@ -137,6 +138,11 @@ def kit_topology_cpp(result: Plan) -> str:
     sequencers = "".join(f"    // The sequencer's buffer, from F´'s allocator (the template's size)\n"
                          f"    {cpp}.allocateBuffer(0, state.allocator, {size});\n"
                          for cpp, size in result.sequencers.items())
+    parameter_files = "".join(
+        f"    // F´'s FileHandling names its parameter file \"PrmDb.dat\" (its phase code), a name the kit's RAM\n"
+        f"    // file system (MicroFs: /bin<b>/file<n>) has not: the database reads and saves the kit's instead\n"
+        f"    {deployment.cpp(instance.qualified)}.configure(RamFs::parameterFile);\n"
+        for instance in fixed_parameter_files(deployment))
     free_sequencers = "".join(f"    {cpp}.deallocateBuffer(state.allocator);\n" for cpp in result.sequencers)
     events = deployment.cpp(deployment.patterns.get("event", "events"))
     dispatcher = deployment.cpp(deployment.patterns.get("command", "cmdDisp"))
@@ -153,6 +159,7 @@ def kit_topology_cpp(result: Plan) -> str:
 #include "app/Components/Timing/DispatchStages.hpp"
 #include "app/Components/Timing/TickClock.hpp"
 #include "app/Subtopologies/GroundLink/GroundLink.hpp"
+#include "app/src/RamFs.hpp"
 #include "app/src/ServiceIds.hpp"
 
 namespace Kit {{
@@ -200,7 +207,7 @@ void configureTopology(const TopologyState& state) {{
     U32 contexts[RATE_GROUP_PORTS] = {{}};
 {contexts}
 
-{epoch}{sequencers}
+{epoch}{parameter_files}{sequencers}
     GroundLink::configure(state.allocator, {"true" if result.file_uplink else "false"}, {events});
 }}
 
@@ -233,3 +240,11 @@ void teardownTopology(const TopologyState& state) {{
 
 }}  // namespace Kit
 """
+
+
+def fixed_parameter_files(deployment: Deployment) -> list[fpp.Instance]:
+    """The parameter databases of F´'s FileHandling subtopology, whose phase
+    code names their file "PrmDb.dat": the kit configures them again, after
+    that phase and before the parameters load, with Kit.RamFs.parameterFile.
+    A deployment's own databases are configured by its own code."""
+    return [instance for instance in deployment.subtopologies.get("FileHandling", []) if instance.type == "Svc.PrmDb"]
