@@ -47,6 +47,9 @@ Report::SweepPoint pointOf(const Timing::Segment& segment) {
             name = "file";
             unit = "B/s";  // of file data
             break;
+        case SegmentAxis::SEQUENCE:
+            name = "sequence";  // commands the sequencer runs
+            break;
         default:
             FW_ASSERT(0, static_cast<FwAssertArgType>(segment.axis.e));
             break;

@@ -34,6 +34,7 @@ from kittools.commands import (
     sizing,
     test,
 )
+from kittools.link.serial_points import AXES
 from kittools.sizes import symbols
 from kittools.suite import budget
 from kittools.workspace import KIT_ROOT, KitError
@@ -112,6 +113,8 @@ def parser() -> argparse.ArgumentParser:
     w.add_argument("--board", default=REFERENCE_BOARD, help=f"board target (default: {REFERENCE_BOARD})")
     variants.add_model_option(w, "default: rtos", default="rtos")
     add_deployment_option(w, "the F´ deployment to sweep")
+    w.add_argument("--axis", action="append", choices=[axis.name for axis in AXES], dest="axes",
+                   help="sweep this axis only (again for more; default: every axis the build has the service for)")
     w.set_defaults(func=serial_sweep.run)
     d = sub.add_parser("sizediff", help="symbols added, removed, grown and shrunk between two builds (as "
                                         "bloat-o-meter): build folders, or results files / baselines")

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from kittools import console, metrics, model, sweep
-from kittools.link import client, serial_sweep
+from kittools.link import client, services
 from kittools.link.dictionary import Dictionary
 from kittools.report import analysis, link_report, writer
 from kittools.sizes.memory import Footprint
@@ -329,11 +329,11 @@ def test_health_stops_pinging_the_event_service_with_its_own_command(tmp_path: P
     where the build has no health."""
     names = _names(tmp_path, {f"{health}.HLTH_PING_ENABLE": 0x2901, f"{events}.SET_ID_FILTER": 0x2A01})
     entry = events.replace(".", "_").encode()
-    sent = serial_sweep.ping_enable(names, enabled=False)
+    sent = services.ping_enable(names, enabled=False)
     assert sent == (client.frame(client.command(0x2901, len(entry).to_bytes(2, "big") + entry + b"\x00"))
                     + client.frame(client.command(0x2901, (len(entry) + 4).to_bytes(2, "big") + entry + b"Ping\x00")))
-    assert serial_sweep.ping_enable(names, enabled=True) != sent
-    assert serial_sweep.ping_enable(_names(tmp_path, {f"{events}.SET_ID_FILTER": 1}), enabled=False) == b""
+    assert services.ping_enable(names, enabled=True) != sent
+    assert services.ping_enable(_names(tmp_path, {f"{events}.SET_ID_FILTER": 1}), enabled=False) == b""
 
 
 def test_the_sweep_table_says_how_the_scenario_shaped_its_axis():

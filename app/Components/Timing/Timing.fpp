@@ -9,6 +9,7 @@ module Kit {
         DOWNLINK = 1 @< extra downlink packets (Load.SET_DOWNLINK), in packets per second
         NOISE = 2 @< random bytes up the link, in percent of its line rate
         FILE_DOWNLINK = 3 @< file data Svc.FileDownlink sends down (SendPartial from the ground), in bytes per second
+        SEQUENCE = 4 @< commands a sequence runs (Svc.CmdSequencer, CS_RUN from the ground), in commands per second
     }
 
     @ Why a segment was not measured

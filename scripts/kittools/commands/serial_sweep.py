@@ -17,7 +17,7 @@ from kittools.suite import results
 def run(args: argparse.Namespace) -> int:
     build_dir, logs = ground_build(args)
     say(f"serial-load sweep on {build_dir}'s link ...")
-    outcome = serial_sweep.run(build_dir)
+    outcome = serial_sweep.run(build_dir, axes=args.axes)
     out = logs / results.SERIAL_SWEEP_FILE
     out.write_text(json.dumps(outcome.to_json(), indent=2) + "\n")
     found = outcome.sweep()

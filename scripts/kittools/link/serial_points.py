@@ -43,7 +43,12 @@ NOISE = Axis("noise", 2, "%", (0, 25, 50, 75, 100))
 # data a second, asked for by the ground as SendPartial commands of the bulk
 # file, up to a full line (the sweep adds that level: the line rate in bytes)
 FILE = Axis("file", 3, "B/s", (0, 1024, 2048, 4096, 8192))
-AXES = (UPLINK, DOWNLINK, NOISE, FILE)
+# A sequence (Svc.CmdSequencer, where the build has it: kittools.link.
+# sequence_load): the commands it runs a second, its runs asked for by the
+# ground at the rate that offers them; the top runs a sequence each 10 Hz
+# cycle of the reference deployment
+SEQUENCE = Axis("sequence", 4, "cmd/s", (0, 10, 20, 40, 80))
+AXES = (UPLINK, DOWNLINK, NOISE, FILE, SEQUENCE)
 # A file level asks for a part of the bulk file this often (a steadier load
 # than a whole file now and then), the whole file when a part that size is
 # more than it holds, then more often: FileDownlink starts a queued file at
@@ -121,15 +126,23 @@ class PointTraffic:
     #: bytes of the file packets the ground received for them
     file_bytes_asked: int = 0
     file_bytes_received: int = 0
+    #: The sequence axis: the commands of the runs the ground asked for, and
+    #: those the sequencer ran (their answers, the NO_OPs answered)
+    sequence_commands_asked: int = 0
+    sequence_commands_run: int = 0
 
     def offered(self) -> int:
         if self.axis == DOWNLINK.name:
             return self.packets_received + self.packets_lost
+        if self.axis == SEQUENCE.name:
+            return self.sequence_commands_asked
         return self.file_bytes_asked if self.axis == FILE.name else self.commands_sent
 
     def delivered(self) -> int:
         if self.axis == DOWNLINK.name:
             return self.packets_received
+        if self.axis == SEQUENCE.name:
+            return self.sequence_commands_run
         return self.file_bytes_received if self.axis == FILE.name else self.commands_dispatched
 
     def record(self) -> str:

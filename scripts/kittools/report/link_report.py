@@ -20,7 +20,7 @@ COMMAND_AXES = ("uplink", "noise")
 #: axis' is reported, not gated: it is where FileDownlink's own cadence (a
 #: file started at its 10 Hz Run, 100 ms between files, one queued) stops
 #: keeping up, and which Run a host-timed SendPartial lands before moves it
-DELIVERY_UNITS = {"uplink": "cmd/s", "noise": "%", "file": "B/s"}
+DELIVERY_UNITS = {"uplink": "cmd/s", "noise": "%", "file": "B/s", "sequence": "cmd/s"}
 
 
 def serial_plays(variant: Variant) -> dict[tuple[str, int], list[dict[str, Any]]]:
@@ -74,8 +74,9 @@ def serial_link_table(data: Results) -> Table | None:
         columns += [f"{v} delivered (each play)", f"{v} ring drops (B)"]
     return Table("Serial load: what the link delivered, play by play (uplink, noise: NO_OPs the link passed to the "
                  "dispatcher; downlink: packets the ground received, by their numbers; file: file data bytes the "
-                 "ground received of those SendPartial asked for; ring drops: bytes the UART driver's receive ring "
-                 "had no room for)", columns, rows)
+                 "ground received of those SendPartial asked for; sequence: commands the sequencer ran of those "
+                 "in the runs the ground asked for; ring drops: bytes the UART driver's receive ring had no room "
+                 "for)", columns, rows)
 
 
 def delivery_breaking_point(plays: dict[tuple[str, int], list[dict[str, Any]]], axis: str) -> int | None:

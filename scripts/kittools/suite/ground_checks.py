@@ -17,6 +17,9 @@ from kittools import sweep
 from kittools.boards.scaffold import REFERENCE_BOARD
 from kittools.build import runner
 from kittools.link import file_fuzz, flood, fuzz, ground, serial_sweep
+from kittools.link.dictionary import Dictionary
+from kittools.link.sequence_load import RUN_COMMAND
+from kittools.link.serial_points import SEQUENCE
 from kittools.log import LOG, say
 from kittools.suite import platforms, results
 from kittools.suite.counts import Tally, junit_failures, junit_tally, run_logged
@@ -53,6 +56,10 @@ SERIAL_SWEEP_BOARD = REFERENCE_BOARD
 #: What a level offers is the same in every play; what it delivers and the
 #: latencies move from play to play, and the budget holds none of them
 SERIAL_PLAYS_CI = 1
+#: Elsewhere, a build with F´'s command sequencer plays the sequence axis
+#: alone (issue 32: a sequence as a further load; qemu_cortex_m3's profile
+#: leaves the sequencer out), about 10 s a play of its levels
+SEQUENCE_AXES = (SEQUENCE.name,)
 
 
 def ground_builds(required: bool = True, twister_out: Path = TWISTER_OUT) -> list[tuple[str, Path]]:
@@ -162,6 +169,8 @@ def raw_link_checks(platform: str, build: Path, log_dir: Path, serial_plays: int
     checks: list[_BuildCheck] = [fuzz_build, file_fuzz_build, flood_build]
     if check_board(platform) == check_board(SERIAL_SWEEP_BOARD):
         checks.append(functools.partial(serial_sweep_build, plays=serial_plays))
+    elif serial_plays and Dictionary.read(ground.link_of(build).dictionary).owner_of(RUN_COMMAND) is not None:
+        checks.append(functools.partial(serial_sweep_build, plays=serial_plays, axes=SEQUENCE_AXES))
     return _on_raw_link(platform, build, log_dir, checks)
 
 
@@ -235,20 +244,22 @@ def _recorded(name: str, what: str, job: Callable[[], _R], path: Path) -> _R | N
     return outcome
 
 
-def serial_sweep_build(build: Path, name: str, logs: Path, plays: int = SERIAL_PLAYS_CI) -> Tally:
+def serial_sweep_build(build: Path, name: str, logs: Path, plays: int = SERIAL_PLAYS_CI,
+                       axes: tuple[str, ...] | None = None) -> Tally:
     """Boot a ground build and run the serial-load sweep on its link
-    (kittools.link.serial_sweep), each level `plays` times; the records go to
-    serial.json beside the other logs, where the board's results
-    (results.from_twister) take them."""
+    (kittools.link.serial_sweep), every axis or those named, each level
+    `plays` times; the records go to serial.json beside the other logs,
+    where the board's results (results.from_twister) take them."""
     started = time.monotonic()
-    outcome = _recorded(name, "serial-load sweep", lambda: serial_sweep.run(build, plays),
+    outcome = _recorded(name, "serial-load sweep", lambda: serial_sweep.run(build, plays, axes),
                         logs / results.SERIAL_SWEEP_FILE)
     if outcome is None:
         return Tally(failed=1)
     found = outcome.sweep()
     breaks = {f"{axis} {rg}": sweep.level_text(found.breaking_point(axis, rg), found.unit(axis))
               for axis in found.axes() for rg in found.rate_groups()} if found else {}
-    say(f"  {name}: serial-load sweep, {plays} play(s) a level, {len(outcome.lines)} points x rate groups, "
+    which = f" ({', '.join(axes)} axis)" if axes else ""
+    say(f"  {name}: serial-load sweep{which}, {plays} play(s) a level, {len(outcome.lines)} points x rate groups, "
         f"breaking points "
         f"{breaks} ({time.monotonic() - started:.0f} s)")
     return Tally(passed=1)
