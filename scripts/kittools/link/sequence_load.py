@@ -46,7 +46,6 @@ from kittools.workspace import KitError
 SEQUENCE_RECORDS = 8
 #: Svc.CmdSequencer's command that runs a file: its owner is the sequencer
 RUN_COMMAND = "CS_RUN"
-COMPLETED_CHANNEL = "CS_SequencesCompleted"
 #: Svc.CmdSequencer.BlockState (U8): NO_BLOCK answers CS_RUN once the run starts
 NO_BLOCK = struct.Struct(">B").pack(1)
 #: fprime-seqgen's time base for a sequence that runs on any clock (TB_DONT_CARE)
@@ -107,29 +106,42 @@ class SequenceLoad:
         self.link = link
         self.sequencer = sequencer
         self.files_received = f"{names.file_uplink}.FilesReceived"
-        self.sequences_completed = f"{sequencer}.{COMPLETED_CHANNEL}"
+        self.file_received = f"{names.file_uplink}.FileReceived"
+        self.noop_event = names.noop_event
         scratch = str(names.constant(SCRATCH_CONSTANT))
         self.data = compile_sequence(names.path, names.noop_command)
         self.run_frame = frame(command(names.opcode(f"{sequencer}.{RUN_COMMAND}"), string_argument(scratch) + NO_BLOCK))
         self.scratch = scratch
 
     def load(self) -> None:
-        """Uplink the sequence and run it once: it completes, or KitError
-        (a sequence its buffer cannot hold: CS_FileSizeError among the
-        events). Both are read from telemetry, which keeps its newest value
-        where a burst of events may be dropped on the way down."""
-        received = self._count(self.files_received)
+        """Uplink the sequence and run it once: every NO_OP of it answered,
+        or KitError (a sequence its buffer cannot hold: CS_FileSizeError
+        among the events). The file's arrival is the file uplink's event or
+        its count (telemetry), whichever comes down: a cooperative model's
+        downlink drops the channels a busy telemetry cycle sends last, and
+        fprime-util's template deployment lost every write of the
+        sequencer's counts (mps2/an385, every cooperative model); the run's
+        answers are events, which the sweep keeps few (routine severities
+        filtered out, as during the axis)."""
+        received = (self._count(self.files_received), self.link.events[self.file_received])
         for data in file_frames(self.data, self.scratch):
             self.link.send(data)
             self.link.pump(lambda: False, PACKET_GAP_S)
-        if not self.link.pump(lambda: self._count(self.files_received) > received, REPLY_TIMEOUT_S):
+        if not self.link.pump(lambda: (self._count(self.files_received), self.link.events[self.file_received])
+                              > received, REPLY_TIMEOUT_S):
             raise KitError(f"the sweep's sequence ({len(self.data)} B) was not received by the file uplink "
                            f"within {REPLY_TIMEOUT_S:.0f} s")
-        completed = self._count(self.sequences_completed)
+        answered = self.answered()
         self.link.send(self.run_frame)
-        if not self.link.pump(lambda: self._count(self.sequences_completed) > completed, REPLY_TIMEOUT_S):
+        if not self.link.pump(lambda: self.answered() >= answered + SEQUENCE_RECORDS, REPLY_TIMEOUT_S):
             raise KitError(f"the sweep's sequence ({len(self.data)} B, {SEQUENCE_RECORDS} NO_OPs in "
-                           f"{self.scratch}) did not complete within {REPLY_TIMEOUT_S:.0f} s of {RUN_COMMAND}")
+                           f"{self.scratch}) had {self.answered() - answered} NO_OP(s) answered "
+                           f"{REPLY_TIMEOUT_S:.0f} s after {RUN_COMMAND}")
+
+    def answered(self) -> int:
+        """The deployment's NO_OP answers so far: a command of the sequence
+        ran (the ground's own traffic on the axis has no NO_OP)."""
+        return self.link.events[self.noop_event]
 
     def _count(self, channel: str) -> int:
         return int(self.link.telemetry.get(channel, 0))

@@ -208,20 +208,17 @@ def sequence_axis(sweeping: Sweeping) -> None:
     if sequencer is None:
         return
     load = sequence_load.SequenceLoad(driver.link, names, sequencer)
-    load.load()
-    def answered() -> int:
-        return driver.link.events[driver.noop_event]
-
     with sweeping.without_event_pings(), sweeping.without_routine_events():
+        load.load()
         for level in SEQUENCE.levels:
             for traffic in sweeping.plays(SEQUENCE, level):
-                before = answered()
+                before = load.answered()
                 sweeping.measure(SEQUENCE, traffic,
                                  driver.offer(load.run_frame, level / sequence_load.SEQUENCE_RECORDS))
                 traffic.sequence_commands_asked = traffic.commands_sent * sequence_load.SEQUENCE_RECORDS
-                driver.quiet(answered, f"{sequencer} was still running its sequence",
+                driver.quiet(load.answered, f"{sequencer} was still running its sequence",
                              reached=before + traffic.sequence_commands_asked)
-                traffic.sequence_commands_run = answered() - before
+                traffic.sequence_commands_run = load.answered() - before
 
 
 #: Each axis' play, in the order a sweep plays them
