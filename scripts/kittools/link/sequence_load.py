@@ -35,7 +35,7 @@ from kittools.link.client import (
     frame,
 )
 from kittools.link.dictionary import Dictionary
-from kittools.link.file_fuzz import END_FIELDS, START_FIELDS, cfdp_checksum
+from kittools.link.file_fuzz import END_FIELDS, SCRATCH_CONSTANT, START_FIELDS, cfdp_checksum
 from kittools.link.health import REPLY_TIMEOUT_S
 from kittools.link.services import string_argument
 from kittools.workspace import KitError
@@ -50,7 +50,6 @@ RUN_COMMAND = "CS_RUN"
 NO_BLOCK = struct.Struct(">B").pack(1)
 #: fprime-seqgen's time base for a sequence that runs on any clock (TB_DONT_CARE)
 ANY_TIME_BASE = 0xFFFF
-SCRATCH_CONSTANT = "Kit.RamFs.scratchFile"
 #: File data a packet carries: the link's buffers hold a frame of it with room to spare
 DATA_BYTES = 64
 SOURCE_NAME = "kit-sweep.seq"
@@ -123,12 +122,12 @@ class SequenceLoad:
         sequencer's counts (mps2/an385, every cooperative model); the run's
         answers are events, which the sweep keeps few (routine severities
         filtered out, as during the axis)."""
-        received = (self._count(self.files_received), self.link.events[self.file_received])
+        counted, told = self._count(self.files_received), self.link.events[self.file_received]
         for data in file_frames(self.data, self.scratch):
             self.link.send(data)
             self.link.pump(lambda: False, PACKET_GAP_S)
-        if not self.link.pump(lambda: (self._count(self.files_received), self.link.events[self.file_received])
-                              > received, REPLY_TIMEOUT_S):
+        if not self.link.pump(lambda: self._count(self.files_received) > counted
+                              or self.link.events[self.file_received] > told, REPLY_TIMEOUT_S):
             raise KitError(f"the sweep's sequence ({len(self.data)} B) was not received by the file uplink "
                            f"within {REPLY_TIMEOUT_S:.0f} s")
         answered = self.answered()

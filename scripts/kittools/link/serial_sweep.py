@@ -102,6 +102,8 @@ class Sweeping:
     repeats: int
     outcome: Outcome = field(default_factory=Outcome)
     points: Iterator[int] = field(default_factory=lambda: iter(range(1 << 30)))
+    #: The load's slices a second, measured before any axis (Driver.slice_hz)
+    slice_hz: int = 0
 
     def plays(self, axis: Axis, level: int) -> Iterator[PointTraffic]:
         """Each play of a level, its traffic recorded once played."""
@@ -145,7 +147,7 @@ def downlink_axis(sweeping: Sweeping) -> None:
     # queue may drop)
     unload = frame(command(opcodes["Kit.load.SET_DOWNLINK"], U32.pack(0)))
     with sweeping.without_event_pings():
-        for level, per_slice in downlink_levels(driver.slice_hz()):
+        for level, per_slice in downlink_levels(sweeping.slice_hz):
             for traffic in sweeping.plays(DOWNLINK, level):
                 received_before = link.events[DOWNLINK_PACKET_EVENT]
                 newest_before = driver.newest_packet()
@@ -247,9 +249,11 @@ def run(build: Path, repeats: int = REPEATS, axes: Collection[str] | None = None
             # The deployment's clock reaches the host with its first telemetry
             if not link.pump(lambda: link.now > 0, REPLY_TIMEOUT_S):
                 raise KitError(f"{build}: no downlink within {REPLY_TIMEOUT_S:.0f} s")
-            for name, play in AXIS_PLAYS.items():
-                if axes is None or name in axes:
-                    play(sweeping)
+            chosen = [play for name, play in AXIS_PLAYS.items() if axes is None or name in axes]
+            if downlink_axis in chosen:  # on the idle deployment
+                sweeping.slice_hz = sweeping.driver.slice_hz()
+            for play in chosen:
+                play(sweeping)
             sweeping.outcome.events = dict(sorted(link.events.items()))
             sweeping.outcome.telemetry = dict(sorted(link.telemetry.items()))
         except KitError as error:
