@@ -157,3 +157,26 @@ def test_a_deployments_own_namespace_is_its_layer(tmp_path):
         "telemetryChannels": [{"name": "Thermal.heaters.Duty"}], "events": []}))
     assert by_layer.deployment_namespaces(tmp_path) == ("Thermal",)
     assert by_layer.deployment_namespaces(tmp_path / "none") == ()
+
+
+def test_an_instance_is_its_subtopologys_wherever_it_is_defined():
+    """An LTO build's instances get their source from the objects
+    (kittools.sizes.definitions): the topology's code, which is not where
+    their layer is."""
+    topology = "app/Top/TopologyAc.cpp/"
+    assert by_layer.classify(topology + "_ZN3Kit6cmdSeqE", "OUTPUT_DIR") == by_layer.SEQUENCER
+    assert by_layer.classify(topology + "_ZN3Kit8linkUartE", "OUTPUT_DIR") == by_layer.GROUND_LINK
+    assert by_layer.classify(topology + "_ZN3Kit10controllerE", "OUTPUT_DIR") == by_layer.KIT
+
+
+def test_path_less_symbols_of_an_lto_build_are_placed_by_their_names():
+    # LTO's one static constructor of every object: the instances'
+    assert by_layer.classify(":/_sub_I_65535_0.0") == by_layer.KIT
+    # a function's own statics
+    assert by_layer.classify(":/_ZZN2Os9Baremetal10TaskRunner12getSingletonEvE6runner") == by_layer.OS_LAYER
+    assert by_layer.classify(":/_ZZN2Os4Task12getSingletonEvE11s_singleton") == by_layer.FRAMEWORK
+    # libgcc's helpers, which carry no DWARF
+    assert by_layer.classify(":/__aeabi_dadd") == by_layer.LIBC
+    assert by_layer.classify(":/__truncdfsf2") == by_layer.LIBC
+    # Zephyr's C library heap
+    assert by_layer.classify(":/malloc_arena") == by_layer.ZEPHYR

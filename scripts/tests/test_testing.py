@@ -64,6 +64,17 @@ def test_junit_tally_handles_testsuites_root(tmp_path):
     assert (tally.passed, tally.failed) == (2, 2)
 
 
+def test_junit_failures_name_each_failure_with_its_reason(tmp_path):
+    report = tmp_path / "pytest.xml"
+    report.write_text(
+        '<testsuites><testsuite tests="3" failures="1" errors="1">'
+        '<testcase name="test_ok"/>'
+        '<testcase name="test_bad"><failure message="AssertionError: 3 != 4&#10;assert 3 == 4">trace</failure>'
+        '</testcase><testcase name="test_broken"><error>fixture gone</error></testcase>'
+        '</testsuite></testsuites>')
+    assert counts.junit_failures(report) == ["test_bad (AssertionError: 3 != 4)", "test_broken (fixture gone)"]
+
+
 def _suite_build(twister_out, platform, name, logs):
     """A twister build of the suite, as the pytest harness leaves it: its
     ELF and each played scenario's console in kit-runs/."""

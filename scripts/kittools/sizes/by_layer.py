@@ -128,6 +128,17 @@ _BY_PATH = (
 
 _BY_SYMBOL = (
     ("_ZN2Os9Baremetal7MicroFs", FILE_HANDLING), ("_ZZN2Os9Baremetal7MicroFs", FILE_HANDLING),
+    # A function's own statics (_ZZ: the function's name, then the static's)
+    ("_ZZN2Os9Baremetal", OS_LAYER), ("_ZZN2Os6Zephyr", OS_LAYER), ("_ZZN2Os", FRAMEWORK), ("_ZZN2Fw", FRAMEWORK),
+    ("_ZZN3Svc", SERVICES), ("_ZZN3Kit", KIT),
+    # LTO merges every object's static constructor (_GLOBAL__sub_I_<file>)
+    # into one, _sub_I_65535_0: the instances' constructors, the deployment's
+    ("_sub_I_", KIT),
+    # The C library's heap arena (Zephyr's lib/libc/common), a file's static
+    ("malloc_arena", ZEPHYR),
+    # libgcc's soft-float and long-division helpers: the toolchain's
+    # libgcc carries no DWARF, so no build names their source
+    ("__aeabi_", LIBC), ("__float", LIBC), ("__fix", LIBC), ("__trunc", LIBC), ("__extend", LIBC),
     ("_ZN3Kit", KIT), ("_ZTVN3Kit", KIT), ("_ZN3Svc", SERVICES), ("_ZTVN3Svc", SERVICES), ("_ZN2Fw", FRAMEWORK),
     ("_ZTVN2Fw", FRAMEWORK), ("_ZN2Os9Baremetal", OS_LAYER), ("_ZN2Os6Zephyr", OS_LAYER), ("_ZN2Os", FRAMEWORK),
     ("_ZTVN2Os", FRAMEWORK), ("_ZNSt", LIBSTDCXX), ("_ZSt", LIBSTDCXX), ("__cxa", LIBSTDCXX), ("__gnu_cxx", LIBSTDCXX),
@@ -189,12 +200,13 @@ def classify(identifier: str, group: str = "", namespaces: tuple[str, ...] = ())
     `namespaces` (deployment_namespaces) is the deployment's, as the
     reference's (namespace Kit) is."""
     path = _GROUP_PREFIX.get(group, "") + identifier.replace("\\", "/")
-    for needle, category in _BY_PATH:
-        if needle in path:
-            return category
     symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
+    # An instance belongs to its subtopology, wherever the topology's code defines it
     for instances, category in _INSTANCE_LAYERS:
         if symbol in instances:
+            return category
+    for needle, category in _BY_PATH:
+        if needle in path:
             return category
     # Mangled C++ names spell each class name out (e.g. _ZTVN3Svc8ComQueueE)
     if symbol.startswith(("_ZN3Svc", "_ZTVN3Svc", "_ZN6Zephyr", "_ZTVN6Zephyr")):
@@ -240,7 +252,8 @@ def report(build_dir: Path, kind: str, niceness: int = 0) -> dict:
     path = size_report.output(build_dir, kind)
     made_from = build_dir / "size-reports.elf-sha256"
     elf = BuildFolder(build_dir).built_elf()
-    image = hashlib.sha256(elf.read_bytes()).hexdigest()
+    # A report made the same way from the same image: the way's version beside the image's digest
+    image = f"{hashlib.sha256(elf.read_bytes()).hexdigest()} {size_report.FORMAT}"
     if not path.is_file() or not made_from.is_file() or made_from.read_text().strip() != image:
         _make_reports(build_dir, elf, niceness)
         made_from.write_text(image + "\n")

@@ -20,6 +20,26 @@ from kittools.build.folder import BuildFolder
 
 
 @dataclass(frozen=True)
+class Region:
+    """A memory region of the board: where it starts, how many bytes."""
+    base: int
+    size: int
+
+    def holds(self, address: int) -> bool:
+        return self.base <= address < self.base + self.size
+
+
+def flash(folder: BuildFolder) -> Region:
+    config = folder.kconfig()
+    return Region(int(config["CONFIG_FLASH_BASE_ADDRESS"], 0), int(config["CONFIG_FLASH_SIZE"]) * 1024)
+
+
+def sram(folder: BuildFolder) -> Region:
+    config = folder.kconfig()
+    return Region(int(config["CONFIG_SRAM_BASE_ADDRESS"], 0), int(config["CONFIG_SRAM_SIZE"]) * 1024)
+
+
+@dataclass(frozen=True)
 class Footprint:
     rom: int
     ram: int
@@ -33,14 +53,8 @@ def measure(build_dir: Path) -> Footprint:
     for path in (folder.elf, folder.config):
         if not path.is_file():
             raise FileNotFoundError(f"{path} is missing: is {build_dir} a finished Zephyr build?")
-    config = folder.kconfig()
-    flash = (int(config["CONFIG_FLASH_BASE_ADDRESS"], 0), int(config["CONFIG_FLASH_SIZE"]) * 1024)
-    sram = (int(config["CONFIG_SRAM_BASE_ADDRESS"], 0), int(config["CONFIG_SRAM_SIZE"]) * 1024)
-
-    def inside(address: int, region: tuple[int, int]) -> bool:
-        return region[0] <= address < region[0] + region[1]
-
-    rom_end, ram_end = flash[0], sram[0]
+    rom, ram = flash(folder), sram(folder)
+    rom_end, ram_end = rom.base, ram.base
     with folder.elf.open("rb") as stream:
         elf = ELFFile(stream)
         # Load addresses come from the program headers: a section's LMA is its
@@ -55,8 +69,8 @@ def measure(build_dir: Path) -> Footprint:
                 if seg["p_vaddr"] <= vma < seg["p_vaddr"] + seg["p_memsz"]:
                     lma = seg["p_paddr"] + (vma - seg["p_vaddr"])
                     break
-            if inside(vma, sram):
+            if ram.holds(vma):
                 ram_end = max(ram_end, vma + size)
-            if inside(lma, flash) and section["sh_type"] != "SHT_NOBITS":
+            if rom.holds(lma) and section["sh_type"] != "SHT_NOBITS":
                 rom_end = max(rom_end, lma + size)
-    return Footprint(rom=rom_end - flash[0], ram=ram_end - sram[0], rom_size=flash[1], ram_size=sram[1])
+    return Footprint(rom=rom_end - rom.base, ram=ram_end - ram.base, rom_size=rom.size, ram_size=ram.size)

@@ -27,9 +27,14 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+from kittools.build.folder import BuildFolder
+from kittools.sizes import definitions, memory
 from kittools.workspace import DEPS, KIT_ROOT
 
 KINDS = ("rom", "ram")
+#: How the reports are made: a report of an older way is made again
+#: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM)
+FORMAT = 2
 SIZE_REPORT = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
 
 
@@ -64,9 +69,11 @@ def _place(path: Path, groups: list[tuple[str, Path]]) -> tuple[str, str]:
 
 
 def leaves(zr: ModuleType, elf: Any, dwarf: Any, ranges: dict[str, Any], kind: str,
-           build_dir: Path) -> dict[str, Any]:
+           build_dir: Path, sources: dict[str, str]) -> dict[str, Any]:
     """One kind's report: size_report's attribution (main(), up to its tree),
-    its leaves grouped as in its tree, and "(hidden)": what no symbol covers."""
+    its leaves grouped as in its tree, and "(hidden)": what no symbol covers.
+    A symbol the DWARF gives no source gets the one `sources` gives it
+    (kittools.sizes.definitions)."""
     symbol_dict = zr.get_symbols(elf, ranges)[kind]
     processed = {"mapped_symbols": set(), "mapped_addr": set(), "unmapped_symbols": set(symbol_dict.keys())}
     zr.do_simple_name_matching(dwarf, symbol_dict, processed)
@@ -80,6 +87,8 @@ def leaves(zr: ModuleType, elf: Any, dwarf: Any, ranges: dict[str, Any], kind: s
         for entry in entries:
             size = zr.get_symbol_size(entry["symbol"])
             for file in entry["mapped_files"]:
+                if not Path(file).is_absolute():  # no source in the DWARF: the object that defines it
+                    file = definitions.defined_in(name, sources) or file
                 group, identifier = _place(Path(file, name), groups)
                 children[group].append({"name": name, "identifier": identifier, "size": size})
     total = int(ranges[f"{kind}_total_size"])
@@ -87,6 +96,17 @@ def leaves(zr: ModuleType, elf: Any, dwarf: Any, ranges: dict[str, Any], kind: s
                                   for group, found in children.items() if found]
     tops.append({"name": "(hidden)", "identifier": "(hidden)", "size": total - sum(t["size"] for t in tops)})
     return {"symbols": {"name": "Root", "identifier": "root", "size": total, "children": tops}, "total_size": total}
+
+
+def _in_sram(ranges: dict[str, Any], sram: memory.Region, elf: Any) -> dict[str, Any]:
+    """size_report's ranges with RAM limited to the sections in SRAM.
+    size_report counts every writable section as RAM too (its .data,
+    copied there at boot), but LTO leaves the baremetal models' rodata
+    writable in flash (flags WA): their RAM report counted 22.7 KB of
+    rodata on qemu_cortex_m3 and summed to 87.8 KB on a 64 KiB part."""
+    ram = [bound for bound in ranges["ram"] if sram.holds(bound["start"])]
+    left_out = sum(elf.get_section_by_name(bound["name"])["sh_size"] for bound in ranges["ram"] if bound not in ram)
+    return {**ranges, "ram": ram, "ram_total_size": ranges["ram_total_size"] - left_out}
 
 
 def make(elf_path: Path, build_dir: Path) -> None:
@@ -100,10 +120,11 @@ def make(elf_path: Path, build_dir: Path) -> None:
     with elf_path.open("rb") as stream:
         elf = zr.ELFFile(stream)
         zr.set_global_machine_arch(elf.get_machine_arch())
-        ranges = zr.get_section_ranges(elf)
+        ranges = _in_sram(zr.get_section_ranges(elf), memory.sram(BuildFolder(build_dir)), elf)
         dwarf = elf.get_dwarf_info()
+        sources = definitions.defining_sources(build_dir)
         for kind in KINDS:
-            output(build_dir, kind).write_text(json.dumps(leaves(zr, elf, dwarf, ranges, kind, build_dir)))
+            output(build_dir, kind).write_text(json.dumps(leaves(zr, elf, dwarf, ranges, kind, build_dir, sources)))
 
 
 if __name__ == "__main__":

@@ -82,7 +82,23 @@ def junit_tally(path: Path) -> Tally:
     return Tally(passed=tests - bad - sum(int(s.get("skipped", 0)) for s in suites), failed=bad)
 
 
+# How much of a failure's reason a summary line carries: its first line,
+# enough for the assertion's message, the whole traceback is in the log
+FAILURE_REASON_CHARS = 240
+
+
 def junit_failures(path: Path) -> list[str]:
-    """The names of a JUnit report's failed or erred test cases."""
-    return [str(case.get("name")) for case in ET.parse(path).getroot().iter("testcase")
-            if case.find("failure") is not None or case.find("error") is not None]
+    """Each failed or erred test case of a JUnit report, named with the first
+    line of its reason (pytest's message: the assertion and its values), so
+    a run's summary says why without its log, which a CI run may not keep."""
+    failures = []
+    for case in ET.parse(path).getroot().iter("testcase"):
+        outcome = case.find("failure")
+        if outcome is None:
+            outcome = case.find("error")
+        if outcome is None:
+            continue
+        reason = (outcome.get("message") or outcome.text or "").strip().splitlines()
+        first = reason[0][:FAILURE_REASON_CHARS] if reason else "no reason given"
+        failures.append(f"{case.get('name')} ({first})")
+    return failures

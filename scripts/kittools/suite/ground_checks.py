@@ -156,7 +156,7 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
     say(f"  {name}: {tally.passed} passed, {tally.failed} failed "
         f"({time.monotonic() - started:.0f} s; logs {logs})")
     if tally.failed:
-        say(f"  {name}: FAIL: {', '.join(junit_failures(xml))} (pytest.log: {logs / 'pytest.log'})")
+        say(f"  {name}: FAIL: {'; '.join(junit_failures(xml))} (pytest.log: {logs / 'pytest.log'})")
     return tally
 
 

@@ -1,0 +1,106 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Which source file defines each global symbol of a build, read from the
+build's own objects.
+
+Zephyr's size_report finds a symbol's source in the image's DWARF. An LTO
+build (the baremetal models: CONFIG_LTO) compiles its code again at link
+time, and the image's DWARF then names no source for most symbols: on
+mps2/an385 baremetal 151 KB of 181 KB of ROM had no path, so a layer such as
+the command sequencer read 0 B where the build has one. The objects the
+build compiled still say who defines what: the compiler's nm (`gcc-nm`,
+which reads LTO objects through the compiler's plugin) lists each object's
+global symbols, and the build's compile commands name each object's source.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+from kittools.build.folder import BuildFolder
+
+# nm's types of a definition that is not weak (T text, D data, B bss, R
+# read-only, C common); a weak one (W, V) yields to a strong one
+_STRONG = frozenset("TDBRC")
+_WEAK = frozenset("WV")
+# LTO and GCC's clones name a copy of `name` `name.<pass>.<n>` (lto_priv,
+# constprop, part, isra, cold): the copy is defined where `name` is
+_CLONE_SEPARATOR = "."
+# How many objects one nm command line reads
+_BATCH = 200
+
+
+def _objects(folder: BuildFolder) -> dict[Path, str]:
+    """Each compiled object of the build that exists, with its source file."""
+    if not folder.compile_commands.is_file():
+        return {}
+    found = {}
+    for entry in json.loads(folder.compile_commands.read_text()):
+        output = entry.get("output")
+        if not output:
+            continue
+        obj = Path(entry["directory"], output)
+        if obj.is_file():
+            found[obj] = str(Path(entry["directory"], entry["file"]))
+    return found
+
+
+def _nm(folder: BuildFolder) -> str | None:
+    """The toolchain's nm that reads its LTO objects: `<compiler>-nm` beside
+    the build's C compiler (gcc-nm for gcc, as Debian's toolchain and the
+    Zephyr SDK have it), else the build's own nm, else none."""
+    compiler = folder.cache_value("CMAKE_C_COMPILER")
+    if compiler and Path(f"{compiler}-nm").is_file():
+        return f"{compiler}-nm"
+    nm = folder.cache_value("CMAKE_NM")
+    return nm if nm and shutil.which(nm) else None
+
+
+def defining_sources(build_dir: Path) -> dict[str, str]:
+    """Each global symbol the build's objects define, with the source file of
+    the object that defines it (a strong definition wins over a weak one);
+    empty where the build kept no compile commands or has no nm."""
+    folder = BuildFolder(build_dir)
+    if not folder.configured():
+        return {}
+    objects = _objects(folder)
+    nm = _nm(folder)
+    if not objects or nm is None:
+        return {}
+    strong: dict[str, str] = {}
+    weak: dict[str, str] = {}
+    paths = list(objects)
+    for start in range(0, len(paths), _BATCH):
+        batch = paths[start:start + _BATCH]
+        # An object with no symbols makes nm complain and go on: its status says nothing here
+        listing = subprocess.run([nm, "--defined-only", "-A", *map(str, batch)], capture_output=True, text=True,
+                                 check=False).stdout
+        for line in listing.splitlines():
+            where, _, rest = line.rpartition(":")
+            fields = rest.split()
+            if len(fields) != 3 or not where:
+                continue
+            _, kind, name = fields
+            source = objects.get(Path(where))
+            if source is None:
+                continue
+            if kind in _STRONG:
+                strong.setdefault(name, source)
+            elif kind in _WEAK:
+                weak.setdefault(name, source)
+    return weak | strong
+
+
+# Zephyr's main thread's entry (kernel/init.c, a static nm does not list)
+# holds the deployment's main() inlined under LTO: most of its bytes are
+# main's, so it goes where main is defined
+_HOLDS_INLINED = {"bg_thread_main": "main"}
+
+
+def defined_in(name: str, sources: dict[str, str]) -> str | None:
+    """The source defining the symbol `name`, or the one defining the
+    function it is a clone of (`name` up to its first '.')."""
+    base = name.split(_CLONE_SEPARATOR, 1)[0]
+    return sources.get(name) or sources.get(base) or sources.get(_HOLDS_INLINED.get(base, ""))
