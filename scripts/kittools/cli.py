@@ -114,7 +114,8 @@ def parser() -> argparse.ArgumentParser:
     variants.add_model_option(w, "default: rtos", default="rtos")
     add_deployment_option(w, "the F´ deployment to sweep")
     w.add_argument("--axis", action="append", choices=[axis.name for axis in AXES], dest="axes",
-                   help="sweep this axis only (again for more; default: every axis the build has the service for)")
+                   help="sweep this axis only (again for more; default: every axis the build has the service for; "
+                        "an axis named on a build without its service is refused)")
     w.set_defaults(func=serial_sweep.run)
     d = sub.add_parser("sizediff", help="symbols added, removed, grown and shrunk between two builds (as "
                                         "bloat-o-meter): build folders, or results files / baselines")

@@ -78,3 +78,26 @@ def test_every_axis_has_its_play_and_an_unknown_one_is_refused_before_boot(tmp_p
     with pytest.raises(KitError, match="no serial axis sideways: the axes are uplink, downlink, noise, file, "
                                        "sequence"):
         serial_sweep.run(tmp_path / "no-build", axes=("sequence", "sideways"))
+
+
+class _NoSequencer:
+    """A dictionary with F´'s file downlink and no command sequencer."""
+
+    def owner_of(self, command: str) -> str | None:
+        return "Top.fileDownlink" if command == serial_sweep.FILE_DOWNLINK_COMMAND else None
+
+
+def test_an_axis_named_on_a_build_without_its_service_is_refused_before_boot(tmp_path: Path,
+                                                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    """`kit serial-sweep --axis sequence` on a build whose profile leaves the
+    sequencer out says so, where it played nothing and passed."""
+    monkeypatch.setattr(serial_sweep.ground, "link_of", lambda build: type("Link", (), {"dictionary": build})())
+    monkeypatch.setattr(serial_sweep.Dictionary, "read", lambda path: _NoSequencer())
+
+    def boot(*args: object, **kwargs: object) -> None:
+        raise AssertionError("booted a build that cannot play the axis")
+
+    monkeypatch.setattr(serial_sweep.ground, "boot", boot)
+    with pytest.raises(KitError, match=r"no serial axis sequence \(it plays F´'s command sequencer, which this "
+                                       r"build leaves out: no CS_RUN in its dictionary\)"):
+        serial_sweep.run(tmp_path, axes=("file", "sequence"))

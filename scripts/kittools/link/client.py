@@ -80,6 +80,13 @@ def command(opcode: int, arguments: bytes = b"") -> bytes:
     return DESCRIPTOR.pack(FW_PACKET_COMMAND) + OPCODE.pack(opcode) + arguments
 
 
+def file_path_field(path: str) -> bytes:
+    """A path in a file packet (a start packet's source and destination):
+    Fw::FilePacket's one length byte, then the bytes."""
+    encoded = path.encode()
+    return bytes([len(encoded)]) + encoded
+
+
 class Downlink:
     """The link socket: bytes up, and the downlink decoded into events (by
     name) and the latest value of every telemetry channel."""

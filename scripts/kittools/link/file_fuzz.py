@@ -42,6 +42,7 @@ from kittools.link.client import (
     T_START,
     Downlink,
     command,
+    file_path_field,
     frame,
 )
 from kittools.link.dictionary import FILE_UPLINK_CHANNELS, Dictionary
@@ -166,11 +167,6 @@ class FileUplinkModel:
         self._restart(False)
 
 
-def _path(text: str) -> bytes:
-    data = text.encode()
-    return bytes([len(data)]) + data
-
-
 def file_packet(kind: str, rng: random.Random, model: FileUplinkModel, scratch: str) -> bytes:
     """One file packet of a kind (descriptor included), applied to the model."""
     sequence = model.last_sequence + 1
@@ -179,7 +175,8 @@ def file_packet(kind: str, rng: random.Random, model: FileUplinkModel, scratch: 
         good = kind == "start"
         destination = scratch if good else rng.choice(BAD_DESTINATIONS)
         model.start(size, good)
-        body = FILE_PACKET_HEADER.pack(T_START, 0) + START_FIELDS.pack(size) + _path("kit-fuzz") + _path(destination)
+        body = (FILE_PACKET_HEADER.pack(T_START, 0) + START_FIELDS.pack(size) + file_path_field("kit-fuzz")
+                + file_path_field(destination))
     elif kind.startswith("data_") and kind != "data_size_mismatch":
         room = max(0, model.size - model.written)
         payload = rng.randbytes(rng.randint(1, DATA_MAX_BYTES))

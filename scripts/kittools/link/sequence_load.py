@@ -32,6 +32,7 @@ from kittools.link.client import (
     T_START,
     Downlink,
     command,
+    file_path_field,
     frame,
 )
 from kittools.link.dictionary import Dictionary
@@ -82,12 +83,8 @@ def compile_sequence(dictionary: Path, noop_command: str, records: int = SEQUENC
 def file_frames(data: bytes, destination: str) -> list[bytes]:
     """The frames that uplink `data` to `destination` through F´'s file
     uplink: a start, the data in order, an end with its CFDP checksum."""
-    def path(text: str) -> bytes:
-        encoded = text.encode()
-        return bytes([len(encoded)]) + encoded
-
-    packets = [FILE_PACKET_HEADER.pack(T_START, 0) + START_FIELDS.pack(len(data)) + path(SOURCE_NAME)
-               + path(destination)]
+    packets = [FILE_PACKET_HEADER.pack(T_START, 0) + START_FIELDS.pack(len(data)) + file_path_field(SOURCE_NAME)
+               + file_path_field(destination)]
     for index, offset in enumerate(range(0, len(data), DATA_BYTES), start=1):
         chunk = data[offset:offset + DATA_BYTES]
         packets.append(FILE_PACKET_HEADER.pack(T_DATA, index) + FILE_DATA_FIELDS.pack(offset, len(chunk)) + chunk)

@@ -87,6 +87,8 @@ from kittools.workspace import KitError
 U32 = struct.Struct(">I")
 # The file axis' bulk file (Kit.RamFs.bulkFile), filled by the driver first
 BULK_FILE_CONSTANT = "Kit.RamFs.bulkFile"
+# F´'s FileDownlink command the file axis sends (it names the instance)
+FILE_DOWNLINK_COMMAND = "SendPartial"
 # The ground's name for what the file axis downlinks (fprime-gds is not on
 # the link during the sweep: nothing writes it)
 SWEEP_FILE_DESTINATION = "kit-sweep.bin"
@@ -173,7 +175,7 @@ def noise_axis(sweeping: Sweeping) -> None:
 def file_axis(sweeping: Sweeping) -> None:
     """Where the build has F´'s FileDownlink, whatever its instance's name."""
     driver, link, names = sweeping.driver, sweeping.driver.link, sweeping.names
-    file_downlink = names.owner_of("SendPartial")
+    file_downlink = names.owner_of(FILE_DOWNLINK_COMMAND)
     if file_downlink is None:
         return
     send_partial = names.opcodes[f"{file_downlink}.SendPartial"]
@@ -230,15 +232,27 @@ AXIS_PLAYS: dict[str, Callable[[Sweeping], None]] = {
 }
 
 
+#: The axes that play an F´ service the build may leave out: the service, and a command that names its instance
+AXIS_SERVICES: dict[str, tuple[str, str]] = {
+    FILE.name: ("F´'s file downlink", FILE_DOWNLINK_COMMAND),
+    SEQUENCE.name: ("F´'s command sequencer", sequence_load.RUN_COMMAND),
+}
+
+
 def run(build: Path, repeats: int = REPEATS, axes: Collection[str] | None = None) -> Outcome:
     """Boot a ground build and sweep its link, each level `repeats` times:
-    every axis, or those named in `axes` (an axis the build lacks the
-    service for is left out)."""
+    every axis (one the build lacks the service for is left out), or those
+    named in `axes` (KitError when the build lacks one's service)."""
     unknown = sorted(set(axes or ()) - set(AXIS_PLAYS))
     if unknown:
         raise KitError(f"no serial axis {', '.join(unknown)}: the axes are {', '.join(AXIS_PLAYS)}")
     link_info = ground.link_of(build)
     names = Dictionary.read(link_info.dictionary)
+    lacking = [f"{axis} (it plays {service}, which this build leaves out: no {command} in its dictionary)"
+               for axis, (service, command) in AXIS_SERVICES.items()
+               if axes is not None and axis in axes and names.owner_of(command) is None]
+    if lacking:
+        raise KitError(f"{build}: no serial axis {'; '.join(lacking)}")
     # In real time: the line's writes stay small and even (client.Line)
     with ground.boot(link_info, realtime=True) as qemu:
         baud = line_rate(ground.link_line(qemu))
