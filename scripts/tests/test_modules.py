@@ -1,5 +1,28 @@
 # SPDX-License-Identifier: Apache-2.0
-from kittools.sizes import by_layer
+from kittools.sizes import by_layer, instances
+
+# The reference's instances as FPP's topology headers declare them (app/Top's, app/Subtopologies')
+KIT_TOPOLOGY_HEADER = """
+namespace Kit {
+  //! comQueue
+  extern Svc::ComQueue comQueue;
+}
+namespace Kit {
+  extern Zephyr::ZephyrUartDriver linkUart;
+}
+namespace Kit {
+  extern Kit::LinkHealth linkHealth;
+}
+namespace Kit { extern Svc::Health health; }
+namespace Kit { extern Svc::Version version; }
+namespace Kit { extern Svc::PrmDb prmDb; }
+namespace Kit { extern Svc::CmdSequencer cmdSeq; }
+namespace Kit { extern Kit::Timing timing; }
+namespace Kit { extern Kit::PingProbe eventsPing; }
+namespace Kit { extern Kit::Controller controller; }
+namespace Kit { extern Svc::TlmChan tlmSend; }
+"""
+KIT = by_layer.Deployment.of((), instances.of_header(KIT_TOPOLOGY_HEADER))
 
 
 def _tree():
@@ -49,10 +72,11 @@ def test_the_ground_link_is_its_own_layer():
                             "WORKSPACE") == link
     # path-less: its vtables and its instances' objects (static RAM)
     assert by_layer.classify(":/_ZTVN3Svc8ComQueueE") == link
-    assert by_layer.classify(":/_ZN3Kit8linkUartE") == link
-    assert by_layer.classify(":/_ZN3Kit10linkHealthE") == link
+    assert by_layer.classify(":/_ZN3Kit8linkUartE", deployment=KIT) == link
+    # ... not the kit's counters of it, an instrument like their code
+    assert by_layer.classify(":/_ZN3Kit10linkHealthE", deployment=KIT) == by_layer.INSTRUMENTS
     # not the link: another instance, another service
-    assert by_layer.classify(":/_ZN3Kit10controllerE") == by_layer.KIT
+    assert by_layer.classify(":/_ZN3Kit10controllerE", deployment=KIT) == by_layer.KIT
     dispatcher = "deps/fprime/Svc/CmdDispatcher/CommandDispatcherImpl.cpp/f"
     assert by_layer.classify(dispatcher, "WORKSPACE") == by_layer.SERVICES
 
@@ -62,27 +86,27 @@ def test_each_subtopology_and_the_instruments_are_layers_of_their_own():
     health = by_layer.HEALTH_VERSION
     assert by_layer.classify("F-Prime/Svc/Health/HealthComponentAc.cpp/f", "OUTPUT_DIR") == health
     assert by_layer.classify(":/_ZTVN3Svc7VersionE") == health
-    assert by_layer.classify(":/_ZN3Kit6healthE") == health
+    assert by_layer.classify(":/_ZN3Kit6healthE", deployment=KIT) == health
     # ... not the kit's LinkHealth, whose mangled name holds "Health"
     assert by_layer.classify(":/_ZN3Svc10LinkHealthC2Ev") != health
     # FileHandling: the parameter database, MicroFs and the kit's mount
     files = by_layer.FILE_HANDLING
     assert by_layer.classify("deps/fprime/Svc/PrmDb/PrmDbImpl.cpp/f", "WORKSPACE") == files
-    assert by_layer.classify(":/_ZN3Kit5prmDbE") == files
+    assert by_layer.classify(":/_ZN3Kit5prmDbE", deployment=KIT) == files
     micro_fs = "deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/MicroFs/MicroFs.cpp/f"
     assert by_layer.classify(micro_fs, "WORKSPACE") == files
     assert by_layer.classify("deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/File.cpp/f", "WORKSPACE") == files
     assert by_layer.classify("app/src/RamFs.cpp/s_region", "WORKSPACE") == files
     # the command sequencer: its code and its instance
     assert by_layer.classify("deps/fprime/Svc/CmdSequencer/CmdSequencerImpl.cpp/f", "WORKSPACE") == by_layer.SEQUENCER
-    assert by_layer.classify(":/_ZN3Kit6cmdSeqE") == by_layer.SEQUENCER
+    assert by_layer.classify(":/_ZN3Kit6cmdSeqE", deployment=KIT) == by_layer.SEQUENCER
     # ... not fprime-baremetal's task
     task = "deps/fprime-baremetal/fprime-baremetal/Os/Baremetal/Task.cpp/f"
     assert by_layer.classify(task, "WORKSPACE") == by_layer.OS_LAYER
     # the kit's instruments: their code, their instances, the record
     instruments = by_layer.INSTRUMENTS
-    assert by_layer.classify(":/_ZN3Kit6timingE") == instruments
-    assert by_layer.classify(":/_ZN3Kit10eventsPingE") == instruments
+    assert by_layer.classify(":/_ZN3Kit6timingE", deployment=KIT) == instruments
+    assert by_layer.classify(":/_ZN3Kit10eventsPingE", deployment=KIT) == instruments
     assert by_layer.classify("app/Components/Load/Load.cpp/f", "WORKSPACE") == instruments
     assert by_layer.classify("app/src/Report.cpp/f", "WORKSPACE") == instruments
     assert by_layer.classify("app/Components/Controller/Controller.cpp/f", "WORKSPACE") == by_layer.KIT
@@ -147,16 +171,16 @@ def test_a_deployments_own_namespace_is_its_layer(tmp_path):
 
     instance, component = "_ZN7Thermal6rg50HzE", "_ZTVN7Thermal13HeaterControlE"
     assert by_layer.classify(instance) == by_layer.UNATTRIBUTED
-    assert by_layer.classify(instance, namespaces=("Thermal",)) == by_layer.KIT
-    assert by_layer.classify(component, namespaces=("Thermal",)) == by_layer.KIT
-    assert by_layer.classify("_ZN8Thermals1xE", namespaces=("Thermal",)) == by_layer.UNATTRIBUTED
+    assert by_layer.classify(instance, deployment=by_layer.Deployment(("Thermal",))) == by_layer.KIT
+    assert by_layer.classify(component, deployment=by_layer.Deployment(("Thermal",))) == by_layer.KIT
+    assert by_layer.classify("_ZN8Thermals1xE", deployment=by_layer.Deployment(("Thermal",))) == by_layer.UNATTRIBUTED
     dictionary = tmp_path / "build-artifacts" / "x" / "dict" / "ThermalTopologyDictionary.json"
     dictionary.parent.mkdir(parents=True)
     dictionary.write_text(json.dumps({
         "commands": [{"name": "Thermal.cmdDisp.CMD_NO_OP", "opcode": 1}, {"name": "Kit.load.SET_SLICE", "opcode": 2}],
         "telemetryChannels": [{"name": "Thermal.heaters.Duty"}], "events": []}))
-    assert by_layer.deployment_namespaces(tmp_path) == ("Thermal",)
-    assert by_layer.deployment_namespaces(tmp_path / "none") == ()
+    assert by_layer.deployment_of(tmp_path).namespaces == ("Thermal",)
+    assert by_layer.deployment_of(tmp_path / "none") == by_layer.NO_DEPLOYMENT
 
 
 def test_an_instance_is_its_subtopologys_wherever_it_is_defined():
@@ -164,9 +188,9 @@ def test_an_instance_is_its_subtopologys_wherever_it_is_defined():
     (kittools.sizes.definitions): the topology's code, which is not where
     their layer is."""
     topology = "app/Top/TopologyAc.cpp/"
-    assert by_layer.classify(topology + "_ZN3Kit6cmdSeqE", "OUTPUT_DIR") == by_layer.SEQUENCER
-    assert by_layer.classify(topology + "_ZN3Kit8linkUartE", "OUTPUT_DIR") == by_layer.GROUND_LINK
-    assert by_layer.classify(topology + "_ZN3Kit10controllerE", "OUTPUT_DIR") == by_layer.KIT
+    assert by_layer.classify(topology + "_ZN3Kit6cmdSeqE", "OUTPUT_DIR", KIT) == by_layer.SEQUENCER
+    assert by_layer.classify(topology + "_ZN3Kit8linkUartE", "OUTPUT_DIR", KIT) == by_layer.GROUND_LINK
+    assert by_layer.classify(topology + "_ZN3Kit10controllerE", "OUTPUT_DIR", KIT) == by_layer.KIT
 
 
 def test_path_less_symbols_of_an_lto_build_are_placed_by_their_names():
@@ -180,3 +204,44 @@ def test_path_less_symbols_of_an_lto_build_are_placed_by_their_names():
     assert by_layer.classify(":/__truncdfsf2") == by_layer.LIBC
     # Zephyr's C library heap
     assert by_layer.classify(":/malloc_arena") == by_layer.ZEPHYR
+
+
+def test_an_instance_is_placed_by_its_component_type_whatever_its_name(tmp_path):
+    """fprime-util's template names its instances in F´'s subtopologies'
+    namespaces (CdhCore::health): their RAM is their subtopology's, as the
+    reference's is, read from the build's topology headers."""
+    header = tmp_path / "MyDeployment" / "Top" / "MyDeploymentTopologyAc.hpp"
+    header.parent.mkdir(parents=True)
+    header.write_text("""#ifndef X
+namespace CdhCore {
+
+  //! health
+  extern Svc::Health health;
+
+}
+
+namespace CdhCore {
+  extern Svc::CommandDispatcher cmdDisp;
+}
+struct Unrelated { int a; };
+namespace FileHandling { extern Svc::PrmDb prmDb; }
+namespace DataProducts { extern Svc::BufferManager dpBufferManager; }
+namespace MyDeployment {
+  namespace Inner {
+    extern MyDeployment::Sensor sensor;
+  }
+  extern Svc::CmdSequencer cmdSeq;
+}
+#endif
+""")
+    deployment = by_layer.deployment_of(tmp_path)
+    assert deployment.instances == {
+        "_ZN7CdhCore6healthE": by_layer.HEALTH_VERSION,
+        "_ZN7CdhCore7cmdDispE": by_layer.SERVICES,
+        "_ZN12FileHandling5prmDbE": by_layer.FILE_HANDLING,
+        "_ZN12DataProducts15dpBufferManagerE": by_layer.SERVICES,  # not the link's buffers
+        "_ZN12MyDeployment5Inner6sensorE": by_layer.KIT,
+        "_ZN12MyDeployment6cmdSeqE": by_layer.SEQUENCER,
+    }
+    assert by_layer.classify("MyDeployment/Top/TopAc.cpp/_ZN7CdhCore6healthE", "OUTPUT_DIR",
+                             deployment) == by_layer.HEALTH_VERSION

@@ -29,6 +29,8 @@ COMPILE_COMMANDS = "compile_commands.json"
 DICTIONARIES = "build-artifacts/**/dict/*TopologyDictionary.json"
 #: F´'s constants of the kit's configuration (app/config), as autocoded
 FPP_CONSTANTS = "F-Prime/default/config/FppConstantsAc.hpp"
+#: FPP's C++ header of each topology and subtopology the build generated
+TOPOLOGY_HEADERS = "**/*TopologyAc.hpp"
 #: Where twister's QEMU handler keeps a build's console
 CONSOLE_LOG = "handler.log"
 #: Where twister keeps a build's output (the compiler's and the linker's)
@@ -151,6 +153,11 @@ class BuildFolder:
         if not dictionaries:
             raise KitError(f"{self.path} has no F´ dictionary: build it first (west build -d {self.path})")
         return dictionaries[0]
+
+    def topology_headers(self) -> list[Path]:
+        """The C++ headers FPP generated for the build's topology and its
+        subtopologies (none before a build)."""
+        return sorted(self.path.glob(TOPOLOGY_HEADERS))
 
     def kconfig(self, missing_ok: bool = False) -> dict[str, str]:
         """The build's Kconfig values (its .config) as symbol -> value,

@@ -202,7 +202,7 @@ def _measure(knob: Knob, board: str, variant: str, profile: str, out_dir: Path,
     elif row.built:
         footprint = measure(build_dir)
         row.rom, row.ram = footprint.rom, footprint.ram
-        own = by_layer.deployment_namespaces(build_dir)
+        own = by_layer.deployment_of(build_dir)
         row.rom_layers = by_layer.breakdown(by_layer.report(build_dir, "rom"), own)
         row.ram_layers = by_layer.breakdown(by_layer.report(build_dir, "ram"), own)
         try:

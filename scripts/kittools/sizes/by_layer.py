@@ -14,13 +14,14 @@ import hashlib
 import json
 import subprocess
 import sys
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from kittools.build.folder import BuildFolder
 from kittools.link.dictionary import Dictionary
-from kittools.sizes import size_report
+from kittools.sizes import instances, size_report
 from kittools.workspace import KitError, environment
 
 FRAMEWORK = "F´ framework"
@@ -36,6 +37,8 @@ ZEPHYR = "Zephyr kernel, arch, drivers"
 LIBC = "libc (picolibc, libgcc)"
 LIBSTDCXX = "libstdc++"
 UNATTRIBUTED = "unattributed"
+#: The kit's FPP module: its instruments, its ground link, and the reference deployment
+KIT_MODULE = "Kit"
 #: The layers, F´'s subtopologies among them (CdhCore's health and version,
 #: FileHandling, the sequencer, the ComFprime chain) and the kit's
 #: instruments apart from the deployment they measure
@@ -47,38 +50,13 @@ CATEGORIES = (FRAMEWORK, SERVICES, HEALTH_VERSION, FILE_HANDLING, SEQUENCER, GRO
 _LINK_COMPONENTS = ("ComQueue", "FprimeFramer", "FprimeDeframer", "FrameAccumulator", "FprimeRouter", "ComStub",
                     "BufferManager", "ZephyrUartDriver", "FprimeFrameDetector")
 
-# ... and the link's instances (app/Subtopologies/GroundLink/GroundLink.fpp), whose
-# objects hold the link's static RAM (the UART's receive ring among them)
-_LINK_INSTANCES = ("comQueue", "framer", "comStub", "frameAccumulator", "deframer", "router", "linkBuffers",
-                   "linkUart", "linkHealth")
-
 # F´'s other subtopologies in the deployment (app/Top/services/), and the
-# kit's instruments: their components and their instances
+# kit's instruments: their components
 _HEALTH_VERSION_COMPONENTS = ("Health", "Version")
-_HEALTH_VERSION_INSTANCES = ("health", "version")
 _FILE_HANDLING_COMPONENTS = ("PrmDb", "FileDownlink", "FileUplink")
-_FILE_HANDLING_INSTANCES = ("prmDb", "fileDownlink", "fileUplink")
 _SEQUENCER_COMPONENTS = ("CmdSequencer",)
-_SEQUENCER_INSTANCES = ("cmdSeq",)
 _INSTRUMENT_COMPONENTS = ("Timing", "PingProbe", "LinkHealth", "Load", "Faults", "Uplink", "Downlink")
-_INSTRUMENT_INSTANCES = ("timing", "load", "faults", "uplink", "downlink", "eventsPing", "tlmSendPing", "cmdDispPing",
-                         "rg1kHzPing", "rg100HzPing", "rg10HzPing", "prmDbPing", "fileDownlinkPing",
-                         "fileUplinkPing", "cmdSeqPing")
 
-
-def _instance_symbols(names: tuple[str, ...]) -> frozenset[str]:
-    """The mangled names of the deployment's instances (namespace Kit)."""
-    return frozenset(f"_ZN3Kit{len(name)}{name}E" for name in names)
-
-
-_LINK_INSTANCE_SYMBOLS = _instance_symbols(_LINK_INSTANCES)
-_INSTANCE_LAYERS = (
-    (_LINK_INSTANCE_SYMBOLS, GROUND_LINK),
-    (_instance_symbols(_HEALTH_VERSION_INSTANCES), HEALTH_VERSION),
-    (_instance_symbols(_FILE_HANDLING_INSTANCES), FILE_HANDLING),
-    (_instance_symbols(_SEQUENCER_INSTANCES), SEQUENCER),
-    (_instance_symbols(_INSTRUMENT_INSTANCES), INSTRUMENTS),
-)
 # F´ classes by mangled name (length-prefixed: 6Health is not 10LinkHealth)
 _SVC_CLASS_LAYERS = (
     (_LINK_COMPONENTS, GROUND_LINK),
@@ -86,6 +64,47 @@ _SVC_CLASS_LAYERS = (
     (_FILE_HANDLING_COMPONENTS, FILE_HANDLING),
     (_SEQUENCER_COMPONENTS, SEQUENCER),
 )
+# The namespaces of F´'s and fprime-zephyr's components
+_FPRIME_NAMESPACES = ("Svc", "Drv", "Zephyr")
+# F´'s subtopologies whose every instance is one layer, whatever its type
+# (a data product's buffer manager is not the link's)
+_SUBTOPOLOGY_LAYERS = {"ComFprime": GROUND_LINK, "ComCcsds": GROUND_LINK, "FileHandling": FILE_HANDLING,
+                       "DataProducts": SERVICES}
+
+
+def instance_layer(namespace: str, component: str) -> str:
+    """The layer of an instance (its object: its component's static RAM) in
+    the namespace `namespace`, of the component type `component`
+    (kittools.sizes.instances)."""
+    if namespace in _SUBTOPOLOGY_LAYERS:
+        return _SUBTOPOLOGY_LAYERS[namespace]
+    owner, _, name = component.rpartition("::")
+    if owner == KIT_MODULE and name in _INSTRUMENT_COMPONENTS:
+        return INSTRUMENTS
+    if owner in _FPRIME_NAMESPACES:
+        return next((layer for names, layer in _SVC_CLASS_LAYERS if name in names), SERVICES)
+    return KIT
+
+
+@dataclass(frozen=True)
+class Deployment:
+    """What a build's deployment says of its symbols: its own C++
+    namespaces beyond the kit's, and each instance's layer by its mangled
+    name (deployment_of)."""
+    namespaces: tuple[str, ...] = ()
+    instances: Mapping[str, str] = field(default_factory=dict)
+
+    @classmethod
+    def of(cls, namespaces: tuple[str, ...], declared: Mapping[str, tuple[str, str]]) -> Deployment:
+        """From its namespaces and its instances as the topology declares
+        them (kittools.sizes.instances: mangled name -> namespace, type)."""
+        return cls(namespaces, {symbol: instance_layer(namespace, component)
+                                for symbol, (namespace, component) in declared.items()})
+
+
+#: A build whose deployment says nothing more (no dictionary, no topology headers)
+NO_DEPLOYMENT = Deployment()
+
 
 _BY_PATH = (
     # (substring of the source path, category); first match wins
@@ -180,31 +199,27 @@ def _make_reports(build_dir: Path, elf: Path, niceness: int = 0) -> None:
 _GROUP_PREFIX = {"ZEPHYR_BASE": "/deps/zephyr/", "OUTPUT_DIR": "/OUTPUT_DIR/", "WORKSPACE": "/"}
 
 
-#: The kit's FPP module: its instruments, its ground link, and the reference deployment
-KIT_MODULE = "Kit"
-
-
-def deployment_namespaces(build_dir: Path) -> tuple[str, ...]:
-    """The C++ namespaces of a build's deployment beyond the kit's (its own
-    FPP modules: tests/team/Thermal's Thermal), from its dictionary; none
-    where the build has no dictionary."""
+def deployment_of(build_dir: Path) -> Deployment:
+    """A build's deployment: its own FPP modules (tests/team/Thermal's
+    Thermal) from its dictionary, none where it has no dictionary; its
+    instances from its topology's headers."""
     try:
-        return tuple(sorted(Dictionary.read(BuildFolder(build_dir).dictionary()).modules - {KIT_MODULE}))
+        namespaces = tuple(sorted(Dictionary.read(BuildFolder(build_dir).dictionary()).modules - {KIT_MODULE}))
     except KitError:
-        return ()
+        namespaces = ()
+    return Deployment.of(namespaces, instances.of_build(build_dir))
 
 
-def classify(identifier: str, group: str = "", namespaces: tuple[str, ...] = ()) -> str:
+def classify(identifier: str, group: str = "", deployment: Deployment = NO_DEPLOYMENT) -> str:
     """Category of one leaf of a rom/ram report (its 'identifier', within
-    the top-level group named `group`); a symbol of one of the deployment's
-    `namespaces` (deployment_namespaces) is the deployment's, as the
-    reference's (namespace Kit) is."""
+    the top-level group named `group`): an instance of the `deployment`
+    (deployment_of) by its component type, a symbol of one of its
+    namespaces is the deployment's, as the reference's (namespace Kit) is."""
     path = _GROUP_PREFIX.get(group, "") + identifier.replace("\\", "/")
     symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
     # An instance belongs to its subtopology, wherever the topology's code defines it
-    for instances, category in _INSTANCE_LAYERS:
-        if symbol in instances:
-            return category
+    if symbol in deployment.instances:
+        return deployment.instances[symbol]
     for needle, category in _BY_PATH:
         if needle in path:
             return category
@@ -213,7 +228,7 @@ def classify(identifier: str, group: str = "", namespaces: tuple[str, ...] = ())
         for names, category in _SVC_CLASS_LAYERS:
             if any(f"{len(name)}{name}" in symbol for name in names):
                 return category
-    if any(symbol.startswith((f"_ZN{len(ns)}{ns}", f"_ZTVN{len(ns)}{ns}")) for ns in namespaces):
+    if any(symbol.startswith((f"_ZN{len(ns)}{ns}", f"_ZTVN{len(ns)}{ns}")) for ns in deployment.namespaces):
         return KIT
     for prefix, category in _BY_SYMBOL:
         if symbol.startswith(prefix):
@@ -230,13 +245,13 @@ def _leaves(node: dict) -> Iterator[dict]:
         yield from _leaves(child)
 
 
-def breakdown(report: dict, namespaces: tuple[str, ...] = ()) -> dict[str, int]:
-    """Bytes per category; sums to the report's total_size. `namespaces`:
-    the deployment's own (deployment_namespaces)."""
+def breakdown(report: dict, deployment: Deployment = NO_DEPLOYMENT) -> dict[str, int]:
+    """Bytes per category; sums to the report's total_size. `deployment`:
+    the build's (deployment_of)."""
     sizes = {name: 0 for name in CATEGORIES}
     for group in report["symbols"].get("children", []):
         for leaf in _leaves(group):
-            category = classify(str(leaf.get("identifier", "")), str(group.get("name", "")), namespaces)
+            category = classify(str(leaf.get("identifier", "")), str(group.get("name", "")), deployment)
             sizes[category] += int(leaf.get("size", 0))
     return sizes
 

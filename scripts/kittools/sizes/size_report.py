@@ -120,7 +120,10 @@ def make(elf_path: Path, build_dir: Path) -> None:
     with elf_path.open("rb") as stream:
         elf = zr.ELFFile(stream)
         zr.set_global_machine_arch(elf.get_machine_arch())
-        ranges = _in_sram(zr.get_section_ranges(elf), memory.sram(BuildFolder(build_dir)), elf)
+        ranges = zr.get_section_ranges(elf)
+        folder = BuildFolder(build_dir)
+        if folder.config.is_file():  # the board's SRAM is in it (Zephyr's attribution alone where it is gone)
+            ranges = _in_sram(ranges, memory.sram(folder), elf)
         dwarf = elf.get_dwarf_info()
         sources = definitions.defining_sources(build_dir)
         for kind in KINDS:

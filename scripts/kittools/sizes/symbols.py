@@ -54,9 +54,10 @@ def _leaves(node: dict, group: str) -> Iterator[tuple[str, str, int]]:
         yield from _leaves(child, group)
 
 
-def leaves(report: dict) -> list[Leaf]:
-    """Every symbol of a Zephyr rom/ram report. The key is the symbol's name;
-    a name defined in several files (static functions, `CSWTCH.n`) gets its
+def leaves(report: dict, deployment: by_layer.Deployment = by_layer.NO_DEPLOYMENT) -> list[Leaf]:
+    """Every symbol of a Zephyr rom/ram report, in its layer (`deployment`:
+    the build's, by_layer.deployment_of). The key is the symbol's name; a
+    name defined in several files (static functions, `CSWTCH.n`) gets its
     file after an `@` so that each stays one row."""
     raw = [(identifier, group, size) for top in report["symbols"].get("children", [])
            for identifier, group, size in _leaves(top, str(top.get("name", "")))]
@@ -70,7 +71,7 @@ def leaves(report: dict) -> list[Leaf]:
             continue
         where = identifier.rsplit("/", 1)[0] if "/" in identifier else ""
         key = name if seen[name] == 1 else f"{name}@{where.rsplit('/', 1)[-1] or group}"
-        found.append(Leaf(key, size, by_layer.classify(identifier, group)))
+        found.append(Leaf(key, size, by_layer.classify(identifier, group, deployment)))
     return found
 
 
@@ -85,7 +86,8 @@ def table(found: Iterable[Leaf], floor: int = 0) -> dict[str, int]:
 
 def of_build(build_dir: Path, floor: int = 0) -> dict[str, dict[str, int]]:
     """A build's symbol tables, rom and ram."""
-    return {kind: table(leaves(by_layer.report(build_dir, kind)), floor) for kind in KINDS}
+    deployment = by_layer.deployment_of(build_dir)
+    return {kind: table(leaves(by_layer.report(build_dir, kind), deployment), floor) for kind in KINDS}
 
 
 @dataclass(frozen=True)

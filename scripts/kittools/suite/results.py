@@ -158,7 +158,7 @@ def built_only(twister_out: Path, board: str, prefix: str = BUILD_ONLY_PREFIX) -
     reports = by_layer.reports([build for _, build in builds])
     variants: dict[str, model.Variant] = {}
     for (_, build), (rom, ram) in zip(builds, reports, strict=True):
-        size, own = measure(build), by_layer.deployment_namespaces(build)
+        size, own = measure(build), by_layer.deployment_of(build)
         variants[build.name.removeprefix(prefix)] = model.Variant(
             passed=False, metrics={model.ROM: size.rom, model.RAM: size.ram}, build=conditions.read(build),
             modules={"rom": by_layer.breakdown(rom, own), "ram": by_layer.breakdown(ram, own)},
@@ -225,7 +225,7 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
     floors = floors_of(twister_out, board)
     found = []
     for (platform, build, run), (rom, ram) in zip(builds, reports, strict=True):
-        own = by_layer.deployment_namespaces(build)
+        own = by_layer.deployment_of(build)
         sweep = played(build, "load")
         if sweep is not None:
             run.records += [r for r in sweep.records if r.kind in SWEEP_KINDS]
@@ -238,7 +238,7 @@ def collect(twister_out: Path, board: str, log_dir: Path | None = None) -> tuple
         found.append(Played(
             platform, run.variant, measure(build), run.records, link_records,
             by_layer.breakdown(rom, own), by_layer.breakdown(ram, own), conditions.read(build),
-            {kind: symbols.table(symbols.leaves(report), symbols.SYMBOL_FLOOR)
+            {kind: symbols.table(symbols.leaves(report, own), symbols.SYMBOL_FLOOR)
              for kind, report in (("rom", rom), ("ram", ram))},
             sizing.measure(build, [r.fields for r in run.of_kind("QUEUE")]).to_json()))
     return found, floors
