@@ -379,9 +379,7 @@ def test_file_uplinked_byte_for_byte(fprime_test_api: Any, tmp_path: Path) -> No
     uplink = _file_uplink(api)
     bulk, size = _bulk_file(api, FILL_SEED)
     sent = pattern(UPLINK_SEED, size)
-    source = tmp_path / f"kit-up-{size}.bin"
-    source.write_bytes(sent)
-    api.uplink_file(str(source), bulk)
+    api.uplink_file(str(_upload_source(tmp_path, f"kit-up-{size}.bin", sent)), bulk)
     api.assert_event(f"{uplink}.FileReceived", timeout=UPLINK_S)
     api.assert_event_count(0, f"{uplink}.BadChecksum")
     data = _downlinked(api, bulk, size, f"kit-roundtrip-{size}.bin")
@@ -425,10 +423,19 @@ def _sequence(api: Any, tmp_path: Path) -> tuple[str, bytes]:
     return str(api.dictionaries.constant_name["Kit.RamFs.scratchFile"]), binary.read_bytes()
 
 
-def _uplink(api: Any, tmp_path: Path, name: str, data: bytes, destination: str) -> None:
-    source = tmp_path / name
+def _upload_source(tmp_path: Path, name: str, data: bytes) -> Path:
+    """`data` in a file to upload, under a name no other test's upload has:
+    fprime-gds copies a file into its upload store under its base name and
+    deletes that copy once the last packet is sent, on the thread that reads
+    the link, so a test that uploads the same name next can copy its file
+    in before that deletion and lose it (tmp_path's folder is the test's own)."""
+    source = tmp_path / f"{tmp_path.name}-{name}"
     source.write_bytes(data)
-    api.uplink_file(str(source), destination)
+    return source
+
+
+def _uplink(api: Any, tmp_path: Path, name: str, data: bytes, destination: str) -> None:
+    api.uplink_file(str(_upload_source(tmp_path, name, data)), destination)
     api.assert_event(f"{_file_uplink(api)}.FileReceived", timeout=UPLINK_S)
 
 
