@@ -29,7 +29,10 @@ def test_an_lto_builds_objects_name_each_symbols_source(tmp_path):
     (build / "zephyr").mkdir(parents=True)
     (build / "CMakeCache.txt").write_text(f"CMAKE_C_COMPILER:FILEPATH={COMPILER}\n")
     sources = {"strong.c": "int shared(void) { return 1; }\nint buffer[4];\n",
-               "weak.c": "__attribute__((weak)) int shared(void) { return 0; }\nint only_weak_file(void) {return 2;}\n"}
+               "weak.c": "__attribute__((weak)) int shared(void) { return 0; }\nint only_weak_file(void) {return 2;}\n"
+                         "__attribute__((weak)) int inline_like(void) { return 3; }\n"
+                         "__attribute__((weak)) int weak_once(void) { return 4; }\n",
+               "other.c": "__attribute__((weak)) int inline_like(void) { return 3; }\n"}
     commands = []
     for name, text in sources.items():
         source = tmp_path / name
@@ -44,6 +47,8 @@ def test_an_lto_builds_objects_name_each_symbols_source(tmp_path):
     assert found["shared"] == str(tmp_path / "strong.c")  # the strong definition, not the weak one
     assert found["buffer"] == str(tmp_path / "strong.c")
     assert found["only_weak_file"] == str(tmp_path / "weak.c")
+    assert found["weak_once"] == str(tmp_path / "weak.c")  # weak, made in one source only
+    assert "inline_like" not in found  # weak in two sources (a header's inline function): neither is its home
 
 
 class _Section(dict):

@@ -60,8 +60,9 @@ def _nm(folder: BuildFolder) -> str | None:
 
 def defining_sources(build_dir: Path) -> dict[str, str]:
     """Each global symbol the build's objects define, with the source file of
-    the object that defines it (a strong definition wins over a weak one);
-    empty where the build kept no compile commands or has no nm."""
+    the object that defines it (a strong definition wins over a weak one, a
+    weak one several sources make is left out); empty where the build kept
+    no compile commands or has no nm."""
     folder = BuildFolder(build_dir)
     if not folder.configured():
         return {}
@@ -70,7 +71,7 @@ def defining_sources(build_dir: Path) -> dict[str, str]:
     if not objects or nm is None:
         return {}
     strong: dict[str, str] = {}
-    weak: dict[str, str] = {}
+    weak: dict[str, set[str]] = {}
     paths = list(objects)
     for start in range(0, len(paths), _BATCH):
         batch = paths[start:start + _BATCH]
@@ -89,8 +90,11 @@ def defining_sources(build_dir: Path) -> dict[str, str]:
             if kind in _STRONG:
                 strong.setdefault(name, source)
             elif kind in _WEAK:
-                weak.setdefault(name, source)
-    return weak | strong
+                weak.setdefault(name, set()).add(source)
+    # A weak definition several sources make (an inline function of a
+    # header, a vtable) names none of them: the symbol's name places it
+    only_weak = {name: next(iter(sources)) for name, sources in weak.items() if len(sources) == 1}
+    return only_weak | strong
 
 
 # Zephyr's main thread's entry (kernel/init.c, a static nm does not list)

@@ -33,8 +33,9 @@ from kittools.workspace import DEPS, KIT_ROOT
 
 KINDS = ("rom", "ram")
 #: How the reports are made: a report of an older way is made again
-#: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM)
-FORMAT = 2
+#: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM;
+#: 3: no source from a weak definition several objects make)
+FORMAT = 3
 SIZE_REPORT = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
 
 
