@@ -245,3 +245,10 @@ namespace MyDeployment {
     }
     assert by_layer.classify("MyDeployment/Top/TopAc.cpp/_ZN7CdhCore6healthE", "OUTPUT_DIR",
                              deployment) == by_layer.HEALTH_VERSION
+
+
+def test_what_no_symbol_covers_is_a_layer_of_its_own():
+    """size_report's "(hidden)": string literals, mostly (25 KB of
+    fprime-util's template's rodata on mps2/an385), not a failure to place."""
+    assert by_layer.classify("(hidden)", "(hidden)") == by_layer.NO_SYMBOL
+    assert by_layer.classify(":/(hidden)", "(no paths)") == by_layer.UNATTRIBUTED

@@ -37,13 +37,17 @@ ZEPHYR = "Zephyr kernel, arch, drivers"
 LIBC = "libc (picolibc, libgcc)"
 LIBSTDCXX = "libstdc++"
 UNATTRIBUTED = "unattributed"
+#: What no symbol covers (size_report's "(hidden)"): mostly read-only data
+#: without a symbol, the string literals (F´'s event formats, names), then
+#: unwinding tables and alignment
+NO_SYMBOL = "no symbol (string literals, unwinding tables, alignment)"
 #: The kit's FPP module: its instruments, its ground link, and the reference deployment
 KIT_MODULE = "Kit"
 #: The layers, F´'s subtopologies among them (CdhCore's health and version,
 #: FileHandling, the sequencer, the ComFprime chain) and the kit's
 #: instruments apart from the deployment they measure
 CATEGORIES = (FRAMEWORK, SERVICES, HEALTH_VERSION, FILE_HANDLING, SEQUENCER, GROUND_LINK, OS_LAYER, INSTRUMENTS, KIT,
-              ZEPHYR, LIBC, LIBSTDCXX, UNATTRIBUTED)
+              ZEPHYR, LIBC, LIBSTDCXX, NO_SYMBOL, UNATTRIBUTED)
 
 # The components of the ground link (app/Subtopologies/GroundLink/GroundLink.fpp): F´'s ComFprime
 # chain and fprime-zephyr's UART driver, by folder and by class name
@@ -215,6 +219,8 @@ def classify(identifier: str, group: str = "", deployment: Deployment = NO_DEPLO
     the top-level group named `group`): an instance of the `deployment`
     (deployment_of) by its component type, a symbol of one of its
     namespaces is the deployment's, as the reference's (namespace Kit) is."""
+    if group == size_report.HIDDEN:
+        return NO_SYMBOL
     path = _GROUP_PREFIX.get(group, "") + identifier.replace("\\", "/")
     symbol = path.rsplit("/", 1)[-1].removeprefix("_GLOBAL__sub_I_")
     # An instance belongs to its subtopology, wherever the topology's code defines it

@@ -36,6 +36,8 @@ KINDS = ("rom", "ram")
 #: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM;
 #: 3: no source from a weak definition several objects make)
 FORMAT = 3
+#: size_report's group of what no symbol covers
+HIDDEN = "(hidden)"
 SIZE_REPORT = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
 
 
@@ -95,7 +97,7 @@ def leaves(zr: ModuleType, elf: Any, dwarf: Any, ranges: dict[str, Any], kind: s
     total = int(ranges[f"{kind}_total_size"])
     tops: list[dict[str, Any]] = [{"name": group, "size": sum(leaf["size"] for leaf in found), "children": found}
                                   for group, found in children.items() if found]
-    tops.append({"name": "(hidden)", "identifier": "(hidden)", "size": total - sum(t["size"] for t in tops)})
+    tops.append({"name": HIDDEN, "identifier": HIDDEN, "size": total - sum(t["size"] for t in tops)})
     return {"symbols": {"name": "Root", "identifier": "root", "size": total, "children": tops}, "total_size": total}
 
 
