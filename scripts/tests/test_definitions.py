@@ -77,3 +77,48 @@ def test_a_region_holds_its_addresses_only():
     sram = memory.Region(0x20000000, 0x10000)
     assert sram.holds(0x20000000) and sram.holds(0x2000FFFF)
     assert not sram.holds(0x20010000) and not sram.holds(0x1FFFFFFF)
+
+
+class _Attribute:
+    def __init__(self, value):
+        self.value = value
+
+
+class _Entry:
+    def __init__(self, tag, **attributes):
+        self.tag = tag
+        self.attributes = {f"DW_AT_{key}": _Attribute(value) for key, value in attributes.items()}
+
+    def iter_children(self):
+        return iter(self.children)
+
+
+class _Unit:
+    def __init__(self, name, comp_dir, *children):
+        self.top = _Entry("DW_TAG_compile_unit", name=name, comp_dir=comp_dir)
+        self.top.children = list(children)
+
+    def get_top_DIE(self):
+        return self.top
+
+
+class _Dwarf:
+    def __init__(self, *units):
+        self.units = units
+
+    def iter_CUs(self):
+        return iter(self.units)
+
+
+def test_an_lto_images_early_debug_names_the_source_of_a_c_static():
+    """LTO's own unit names no source; each source's early unit names what
+    it defines, a declaration elsewhere does not count, and a name two
+    sources define (a static in each) names neither."""
+    dwarf = _Dwarf(
+        _Unit(b"<artificial>", b"/b", _Entry("DW_TAG_variable", name=b"crc_tab32")),
+        _Unit(b"../deps/fprime/Utils/Hash/libcrc/lib_crc.c", b"/ws/build",
+              _Entry("DW_TAG_variable", name=b"crc_tab32"), _Entry("DW_TAG_subprogram", name=b"elapsed")),
+        _Unit(b"../deps/zephyr/kernel/timeout.c", b"/ws/build", _Entry("DW_TAG_subprogram", name=b"elapsed"),
+              _Entry("DW_TAG_variable", name=b"crc_tab32", declaration=True)),
+    )
+    assert definitions.early_debug_sources(dwarf) == {"crc_tab32": "/ws/deps/fprime/Utils/Hash/libcrc/lib_crc.c"}

@@ -252,3 +252,12 @@ def test_what_no_symbol_covers_is_a_layer_of_its_own():
     fprime-util's template's rodata on mps2/an385), not a failure to place."""
     assert by_layer.classify("(hidden)", "(hidden)") == by_layer.NO_SYMBOL
     assert by_layer.classify(":/(hidden)", "(no paths)") == by_layer.UNATTRIBUTED
+
+
+def test_fprime_baremetals_services_are_services_and_its_os_the_os_layer():
+    dispatcher = "fprime-baremetal/Svc/PassiveCmdDispatcher/PassiveCmdDispatcherComponentAc.cpp/f"
+    assert by_layer.classify(dispatcher, "OUTPUT_DIR") == by_layer.SERVICES
+    source = "deps/fprime-baremetal/fprime-baremetal/Svc/PassiveCmdDispatcher/PassiveCmdDispatcher.cpp/f"
+    assert by_layer.classify(source, "WORKSPACE") == by_layer.SERVICES
+    task_runner = "deps/fprime-baremetal/fprime-baremetal/Os/TaskRunner/TaskRunner.cpp/r"
+    assert by_layer.classify(task_runner, "WORKSPACE") == by_layer.OS_LAYER

@@ -128,6 +128,10 @@ _BY_PATH = (
     *((f"/app/Components/{name}/", INSTRUMENTS) for name in _INSTRUMENT_COMPONENTS),
     ("/app/src/", INSTRUMENTS),
     ("/app/scenarios/", INSTRUMENTS),
+    # fprime-baremetal's services (its passive dispatcher, its linear
+    # telemetry channel), built or generated, are F´ services; the rest of
+    # it is the OS layer
+    ("/fprime-baremetal/Svc/", SERVICES),
     ("/deps/fprime-baremetal/", OS_LAYER),
     ("/deps/fprime-zephyr/", OS_LAYER),
     ("/rtos/", OS_LAYER),

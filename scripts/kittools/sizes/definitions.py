@@ -18,6 +18,7 @@ import json
 import shutil
 import subprocess
 from pathlib import Path
+from typing import Any
 
 from kittools.build.folder import BuildFolder
 
@@ -107,4 +108,35 @@ def defined_in(name: str, sources: dict[str, str]) -> str | None:
     """The source defining the symbol `name`, or the one defining the
     function it is a clone of (`name` up to its first '.')."""
     base = name.split(_CLONE_SEPARATOR, 1)[0]
-    return sources.get(name) or sources.get(base) or sources.get(_HOLDS_INLINED.get(base, ""))
+    host = _HOLDS_INLINED.get(base)
+    if host is not None and host in sources:
+        return sources[host]
+    return sources.get(name) or sources.get(base)
+
+
+# The DWARF entries of what a C file defines at its top level
+_DEFINITIONS = ("DW_TAG_subprogram", "DW_TAG_variable")
+# The unit LTO's link-time compilation makes, which names no source
+_LTO_UNIT = b"<artificial>"
+
+
+def early_debug_sources(dwarf: Any) -> dict[str, str]:
+    """What the globals nm does not list leave in an LTO image's DWARF: the
+    compiler's early debug information keeps one unit per source, with the
+    C functions and variables it defines at its top level, file statics
+    among them (Zephyr's heap arena, F´'s CRC table). A name defined in one
+    source only, with that source's path (its unit's name against its
+    build folder); a name several sources define is left out."""
+    found: dict[str, set[str]] = {}
+    for unit in dwarf.iter_CUs():
+        top = unit.get_top_DIE()
+        name = top.attributes.get("DW_AT_name")
+        if name is None or name.value == _LTO_UNIT:
+            continue
+        folder = top.attributes.get("DW_AT_comp_dir")
+        source = str(Path(folder.value.decode() if folder else "", name.value.decode()).resolve())
+        for entry in top.iter_children():
+            defined = entry.attributes.get("DW_AT_name")
+            if entry.tag in _DEFINITIONS and defined is not None and "DW_AT_declaration" not in entry.attributes:
+                found.setdefault(defined.value.decode(errors="replace"), set()).add(source)
+    return {symbol: next(iter(files)) for symbol, files in found.items() if len(files) == 1}

@@ -34,8 +34,9 @@ from kittools.workspace import DEPS, KIT_ROOT
 KINDS = ("rom", "ram")
 #: How the reports are made: a report of an older way is made again
 #: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM;
-#: 3: no source from a weak definition several objects make)
-FORMAT = 3
+#: 3: no source from a weak definition several objects make;
+#: 4: C statics' sources from the early debug information)
+FORMAT = 4
 #: size_report's group of what no symbol covers
 HIDDEN = "(hidden)"
 SIZE_REPORT = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
@@ -128,7 +129,8 @@ def make(elf_path: Path, build_dir: Path) -> None:
         if folder.config.is_file():  # the board's SRAM is in it (Zephyr's attribution alone where it is gone)
             ranges = _in_sram(ranges, memory.sram(folder), elf)
         dwarf = elf.get_dwarf_info()
-        sources = definitions.defining_sources(build_dir)
+        # The objects' globals first; the early debug information's C statics beside them
+        sources = definitions.early_debug_sources(dwarf) | definitions.defining_sources(build_dir)
         for kind in KINDS:
             output(build_dir, kind).write_text(json.dumps(leaves(zr, elf, dwarf, ranges, kind, build_dir, sources)))
 
