@@ -21,6 +21,8 @@ def test_a_clone_is_defined_where_its_function_is():
     # Zephyr's main thread entry holds main() inlined under LTO
     assert definitions.defined_in("bg_thread_main.lto_priv.0", sources) == "/kit/app/src/main.cpp"
     assert definitions.defined_in("z_static", sources) is None
+    # ... not where the DWARF names its source: no LTO inlined main into it there
+    assert definitions.defined_in("bg_thread_main", sources, inlined=False) is None
 
 
 @pytest.mark.skipif(COMPILER is None, reason="needs the arm-none-eabi toolchain (scripts/setup.sh provisions it)")
@@ -85,12 +87,23 @@ class _Attribute:
 
 
 class _Entry:
-    def __init__(self, tag, **attributes):
+    def __init__(self, tag, parent=None, specification=None, **attributes):
         self.tag = tag
+        self.parent = parent
+        self.specification = specification
         self.attributes = {f"DW_AT_{key}": _Attribute(value) for key, value in attributes.items()}
+        if specification is not None:
+            self.attributes["DW_AT_specification"] = _Attribute(0)
 
     def iter_children(self):
         return iter(self.children)
+
+    def get_parent(self):
+        return self.parent
+
+    def get_DIE_from_attribute(self, name):
+        assert name == "DW_AT_specification"
+        return self.specification
 
 
 class _Unit:
@@ -122,3 +135,17 @@ def test_an_lto_images_early_debug_names_the_source_of_a_c_static():
               _Entry("DW_TAG_variable", name=b"crc_tab32", declaration=True)),
     )
     assert definitions.early_debug_sources(dwarf) == {"crc_tab32": "/ws/deps/fprime/Utils/Hash/libcrc/lib_crc.c"}
+
+
+def test_a_cpp_variable_in_namespaces_is_named_by_its_declarations_scope():
+    """Kit::RamFs's anonymous s_region: its definition at the unit's top
+    level points at its declaration inside the namespaces."""
+    kit = _Entry("DW_TAG_namespace", name=b"Kit")
+    ram_fs = _Entry("DW_TAG_namespace", parent=kit, name=b"RamFs")
+    anonymous = _Entry("DW_TAG_namespace", parent=ram_fs)
+    declaration = _Entry("DW_TAG_variable", parent=anonymous, name=b"s_region", declaration=True)
+    definition = _Entry("DW_TAG_variable", specification=declaration)
+    function = _Entry("DW_TAG_subprogram", specification=declaration)
+    dwarf = _Dwarf(_Unit(b"../app/src/RamFs.cpp", b"/ws/build", kit, definition, function))
+    assert definitions.early_debug_sources(dwarf) == {
+        "_ZN3Kit5RamFs12_GLOBAL__N_18s_regionE": "/ws/app/src/RamFs.cpp"}

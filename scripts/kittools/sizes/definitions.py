@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from kittools.build.folder import BuildFolder
+from kittools.sizes import instances
 
 # nm's types of a definition that is not weak (T text, D data, B bss, R
 # read-only, C common); a weak one (W, V) yields to a strong one
@@ -104,11 +105,13 @@ def defining_sources(build_dir: Path) -> dict[str, str]:
 _HOLDS_INLINED = {"bg_thread_main": "main"}
 
 
-def defined_in(name: str, sources: dict[str, str]) -> str | None:
+def defined_in(name: str, sources: dict[str, str], inlined: bool = True) -> str | None:
     """The source defining the symbol `name`, or the one defining the
-    function it is a clone of (`name` up to its first '.')."""
+    function it is a clone of (`name` up to its first '.'); with `inlined`,
+    a function that holds another one inlined under LTO (_HOLDS_INLINED)
+    is that one's."""
     base = name.split(_CLONE_SEPARATOR, 1)[0]
-    host = _HOLDS_INLINED.get(base)
+    host = _HOLDS_INLINED.get(base) if inlined else None
     if host is not None and host in sources:
         return sources[host]
     return sources.get(name) or sources.get(base)
@@ -136,7 +139,39 @@ def early_debug_sources(dwarf: Any) -> dict[str, str]:
         folder = top.attributes.get("DW_AT_comp_dir")
         source = str(Path(folder.value.decode() if folder else "", name.value.decode()).resolve())
         for entry in top.iter_children():
-            defined = entry.attributes.get("DW_AT_name")
-            if entry.tag in _DEFINITIONS and defined is not None and "DW_AT_declaration" not in entry.attributes:
-                found.setdefault(defined.value.decode(errors="replace"), set()).add(source)
+            if entry.tag not in _DEFINITIONS or "DW_AT_declaration" in entry.attributes:
+                continue
+            symbol = _defined_name(entry)
+            if symbol is not None:
+                found.setdefault(symbol, set()).add(source)
     return {symbol: next(iter(files)) for symbol, files in found.items() if len(files) == 1}
+
+
+# GCC's name of an anonymous namespace in a mangled name
+_ANONYMOUS_NAMESPACE = "_GLOBAL__N_1"
+
+
+def _defined_name(entry: Any) -> str | None:
+    """The symbol a top-level definition defines: a C name as it is; a C++
+    variable's definition points at its declaration in its namespaces
+    (DW_AT_specification), whose names mangle into the symbol (Kit::RamFs's
+    anonymous s_region: the RAM file system's 17 KB); None for a C++
+    function, whose mangled name needs its parameters (nm lists those that
+    are global, the rest keep their name's layer)."""
+    name = entry.attributes.get("DW_AT_name")
+    if name is not None:
+        return str(name.value.decode(errors="replace"))
+    if entry.tag != "DW_TAG_variable" or "DW_AT_specification" not in entry.attributes:
+        return None
+    declaration = entry.get_DIE_from_attribute("DW_AT_specification")
+    declared = declaration.attributes.get("DW_AT_name")
+    if declared is None:
+        return None
+    scope: list[str] = []
+    parent = declaration.get_parent()
+    while parent is not None and parent.tag == "DW_TAG_namespace":
+        named = parent.attributes.get("DW_AT_name")
+        scope.insert(0, named.value.decode(errors="replace") if named is not None else _ANONYMOUS_NAMESPACE)
+        parent = parent.get_parent()
+    text = declared.value.decode(errors="replace")
+    return instances.mangled(scope, text) if scope else str(text)

@@ -35,8 +35,9 @@ KINDS = ("rom", "ram")
 #: How the reports are made: a report of an older way is made again
 #: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM;
 #: 3: no source from a weak definition several objects make;
-#: 4: C statics' sources from the early debug information)
-FORMAT = 4
+#: 4: C statics' sources from the early debug information;
+#: 5: C++ namespaces' variables too; 6: the definitions before the DWARF's address ranges)
+FORMAT = 6
 #: size_report's group of what no symbol covers
 HIDDEN = "(hidden)"
 SIZE_REPORT = DEPS / "zephyr" / "scripts" / "footprint" / "size_report"
@@ -91,8 +92,13 @@ def leaves(zr: ModuleType, elf: Any, dwarf: Any, ranges: dict[str, Any], kind: s
         for entry in entries:
             size = zr.get_symbol_size(entry["symbol"])
             for file in entry["mapped_files"]:
-                if not Path(file).is_absolute():  # no source in the DWARF: the object that defines it
-                    file = definitions.defined_in(name, sources) or file
+                # The definitions (the objects', the early debug units') name a
+                # source better than the DWARF's address ranges, which put
+                # libgcc's helpers at flash's start in whatever unit has a
+                # range there (a discarded function's: fprime-baremetal's
+                # Directory.cpp on mps2/an385 rtos); a function LTO inlined
+                # into another counts as the host only where the DWARF has no path
+                file = definitions.defined_in(name, sources, inlined=not Path(file).is_absolute()) or file
                 group, identifier = _place(Path(file, name), groups)
                 children[group].append({"name": name, "identifier": identifier, "size": size})
     total = int(ranges[f"{kind}_total_size"])
