@@ -426,6 +426,13 @@ void guardBreach(const Variant::GuardBreach& breach) {
 }
 
 void halt(const char* reasonName, unsigned int reason, bool expected) {
+    // Every stack's high-water mark at the halt: the depth of the path that
+    // led here (an assert's message, its FATAL event, a fault's handler on
+    // the interrupt stack), which no run that ends reaches; the stacks'
+    // sizes (boards/<board>/Kconfig.defconfig) are set from these lines. The
+    // interrupt stack's line is the last, so its figure holds this report's
+    // own depth too.
+    stacks();
     printk("KIT HALT reason=%s code=%u context=%s expected=%s\n", reasonName, reason,
            contextName(Variant::currentContext()), expected ? "yes" : "no");
     if (!expected) {

@@ -32,11 +32,9 @@ from kittools.sizes import definitions, memory
 from kittools.workspace import DEPS, KIT_ROOT
 
 KINDS = ("rom", "ram")
-#: How the reports are made: a report of an older way is made again
-#: (2: sources from the build's objects where the DWARF has none, RAM only in SRAM;
-#: 3: no source from a weak definition several objects make;
-#: 4: C statics' sources from the early debug information;
-#: 5: C++ namespaces' variables too; 6: the definitions before the DWARF's address ranges)
+#: How the reports are made (now: a symbol's source from its definition first,
+#: kittools.sizes.definitions, then the DWARF's; RAM only in SRAM): a report
+#: of an older way is made again
 FORMAT = 6
 #: size_report's group of what no symbol covers
 HIDDEN = "(hidden)"
@@ -77,8 +75,8 @@ def leaves(zr: ModuleType, elf: Any, dwarf: Any, ranges: dict[str, Any], kind: s
            build_dir: Path, sources: dict[str, str]) -> dict[str, Any]:
     """One kind's report: size_report's attribution (main(), up to its tree),
     its leaves grouped as in its tree, and "(hidden)": what no symbol covers.
-    A symbol the DWARF gives no source gets the one `sources` gives it
-    (kittools.sizes.definitions)."""
+    A symbol's source is the one `sources` gives it (its definition:
+    kittools.sizes.definitions) where it gives one, else the DWARF's."""
     symbol_dict = zr.get_symbols(elf, ranges)[kind]
     processed = {"mapped_symbols": set(), "mapped_addr": set(), "unmapped_symbols": set(symbol_dict.keys())}
     zr.do_simple_name_matching(dwarf, symbol_dict, processed)
