@@ -188,8 +188,12 @@ void prepareStacks() {
     s_painted = true;
 }
 
+StackUse currentStack() {
+    return {currentContext(), static_cast<U32>(K_KERNEL_STACK_SIZEOF(z_main_stack)), mainStackUsed()};
+}
+
 U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {
-    out[0] = {{"main", nullptr}, static_cast<U32>(K_KERNEL_STACK_SIZEOF(z_main_stack)), mainStackUsed()};
+    out[0] = currentStack();
     return 1;
 }
 

@@ -83,6 +83,11 @@ Context currentContext() {
     return contextOf(k_current_get());
 }
 
+StackUse currentStack() {
+    const struct k_thread* const thread = k_current_get();
+    return {contextOf(thread), static_cast<U32>(thread->stack_info.size), stackUsed(thread)};
+}
+
 void onTickIsr() {
     k_sem_give(&s_tickSem);
 }

@@ -349,27 +349,40 @@ const char* contextName(const Variant::Context& context) {
     return context.name != nullptr ? context.name : "?";
 }
 
-void stacks() {
-    Variant::StackUse entries[Variant::MAX_CONTEXTS];
-    const U32 count = Variant::stacks(entries);
-    for (U32 i = 0; i < count; i++) {
-        printk("KIT STACK name=%s size=%u used=%u\n", contextName(entries[i].context),
-               static_cast<unsigned>(entries[i].size), static_cast<unsigned>(entries[i].used));
-    }
+namespace {
+
+void stackLine(const Variant::StackUse& use) {
+    printk("KIT STACK name=%s size=%u used=%u\n", contextName(use.context), static_cast<unsigned>(use.size),
+           static_cast<unsigned>(use.used));
+}
+
+// The interrupt stack, which every model has: painted at reset (Zephyr's
+// reset.S, CONFIG_INIT_STACKS), used by the boot before main, by every
+// interrupt since and by a fault's handler; where the paint ends is its
+// high-water mark. A line of its own, not in stackUsedTotal(): the soak
+// holds the contexts the model runs, and an interrupt's depth at a rare
+// moment is not a leak.
+void interruptStack() {
 #if defined(CONFIG_INIT_STACKS)
-    // The interrupt stack, which every model has: painted at reset (Zephyr's
-    // reset.S, CONFIG_INIT_STACKS), used by the boot before main and by every
-    // interrupt since; where the paint ends is its high-water mark. A line of
-    // its own, not in stackUsedTotal(): the soak holds the contexts the model
-    // runs, and an interrupt's depth at a rare moment is not a leak.
     const U8* const bottom = reinterpret_cast<const U8*>(K_KERNEL_STACK_BUFFER(z_interrupt_stacks[0]));
     const U32 size = static_cast<U32>(K_KERNEL_STACK_SIZEOF(z_interrupt_stacks[0]));
     U32 unused = 0;
     while (unused < size && bottom[unused] == 0xAAu) {
         unused++;
     }
-    printk("KIT STACK name=isr size=%u used=%u\n", static_cast<unsigned>(size), static_cast<unsigned>(size - unused));
+    stackLine({{"isr", nullptr}, size, size - unused});
 #endif
+}
+
+}  // namespace
+
+void stacks() {
+    Variant::StackUse entries[Variant::MAX_CONTEXTS];
+    const U32 count = Variant::stacks(entries);
+    for (U32 i = 0; i < count; i++) {
+        stackLine(entries[i]);
+    }
+    interruptStack();
 }
 
 void queues() {
@@ -426,13 +439,14 @@ void guardBreach(const Variant::GuardBreach& breach) {
 }
 
 void halt(const char* reasonName, unsigned int reason, bool expected) {
-    // Every stack's high-water mark at the halt: the depth of the path that
-    // led here (an assert's message, its FATAL event, a fault's handler on
-    // the interrupt stack), which no run that ends reaches; the stacks'
-    // sizes (boards/<board>/Kconfig.defconfig) are set from these lines. The
-    // interrupt stack's line is the last, so its figure holds this report's
-    // own depth too.
-    stacks();
+    // The halted context's stack and the interrupt stack, with their
+    // high-water marks: the depth of the path that led here (an assert's
+    // message, its FATAL event; a fault's handler runs on the interrupt
+    // stack), which no run that ends reaches. The boards' stacks
+    // (boards/<board>/Kconfig.defconfig) are sized from these lines; one
+    // entry each, so that this report adds little to the depth it measures.
+    stackLine(Variant::currentStack());
+    interruptStack();
     printk("KIT HALT reason=%s code=%u context=%s expected=%s\n", reasonName, reason,
            contextName(Variant::currentContext()), expected ? "yes" : "no");
     if (!expected) {

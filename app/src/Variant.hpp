@@ -123,6 +123,10 @@ U32 schedule(ScheduleUse (&out)[MAX_CONTEXTS], GuardMargin& guard);
 //! The execution context running now, for a fatal report
 Context currentContext();
 
+//! The stack of the context running now (a fault's: the thread that took
+//! it), for a fatal report: one entry, no table on the fault's stack
+StackUse currentStack();
+
 }  // namespace Variant
 }  // namespace Kit
 
