@@ -5,6 +5,7 @@
 #include "app/src/CountingAllocator.hpp"
 #include <Fw/Types/Assert.hpp>
 
+#include <zephyr/sys/printk.h>
 #include <cstdlib>
 
 namespace Kit {
@@ -24,6 +25,10 @@ void* CountingAllocator::allocate(const FwEnumStoreType identifier,
     recoverable = false;
     U8* const block = static_cast<U8*>(std::malloc(size + HEADER));
     if (block == nullptr) {
+        // The caller asserts on it at start-up; this line says why first. The
+        // arena is sized per board and model from a run's KIT HEAP arena_left
+        printk("KIT ARENA exhausted request=%u arena=%u (raise CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE)\n",
+               static_cast<unsigned>(size), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE));
         size = 0;  // HeapMonitor counts the failure
         return nullptr;
     }

@@ -63,6 +63,25 @@ void markInitialized() {
     s_initialized = true;
 }
 
+U32 arenaLeft() {
+    // Halving between what fits and what does not: log2(arena) probes at
+    // most. Zephyr's heap merges a freed block back into its neighbour, so
+    // every probe sees the same free space.
+    size_t fits = 0;
+    size_t tooBig = static_cast<size_t>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE) + 1u;
+    while (tooBig - fits > 1u) {
+        const size_t size = fits + (tooBig - fits) / 2u;
+        void* const block = __real_malloc(size);
+        if (block != nullptr) {
+            __real_free(block);
+            fits = size;
+        } else {
+            tooBig = size;
+        }
+    }
+    return static_cast<U32>(fits);
+}
+
 }  // namespace HeapMonitor
 }  // namespace Kit
 

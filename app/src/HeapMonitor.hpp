@@ -24,6 +24,12 @@ U32 failures();
 //! Allocations made after markInitialized(): the kit requires none
 U32 allocationsAfterInit();
 void markInitialized();
+//! The largest block the arena can still give (bytes): what it has left
+//! after start-up, chunk headers and alignment included. The arena
+//! (CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE) less this is what the run used of
+//! it: the figure a board's tight arena is sized from. Probes the heap with
+//! uncounted allocations, each freed at once.
+U32 arenaLeft();
 
 //! For the link-time wrappers only
 void* counted(void* block, size_t size);

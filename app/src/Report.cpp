@@ -300,12 +300,12 @@ bool health() {
 bool heap(const CountingAllocator& allocator) {
     printk(
         "KIT HEAP fprime_peak=%u fprime_allocations=%u bytes=%u allocations=%u frees=%u after_init=%u "
-        "failures=%u arena=%u link_buffers=%u\n",
+        "failures=%u arena=%u arena_left=%u link_buffers=%u\n",
         static_cast<unsigned>(allocator.peakBytes()), static_cast<unsigned>(allocator.allocations()),
         static_cast<unsigned>(HeapMonitor::bytesRequested()), static_cast<unsigned>(HeapMonitor::allocations()),
         static_cast<unsigned>(HeapMonitor::frees()), static_cast<unsigned>(HeapMonitor::allocationsAfterInit()),
         static_cast<unsigned>(HeapMonitor::failures()), static_cast<unsigned>(CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE),
-        static_cast<unsigned>(GroundLink::bufferBytes()));
+        static_cast<unsigned>(HeapMonitor::arenaLeft()), static_cast<unsigned>(GroundLink::bufferBytes()));
     return HeapMonitor::allocationsAfterInit() == 0 && HeapMonitor::failures() == 0;
 }
 

@@ -44,6 +44,8 @@ def metrics(data: VariantData) -> dict[MetricId, float]:
         values[model.HEAP_REQUESTED] = heap.int("bytes")
         if "link_buffers" in heap.fields:
             values[model.HEAP_LINK] = heap.int("link_buffers")
+        if "arena_left" in heap.fields:
+            values[model.HEAP_ARENA_LEFT] = heap.int("arena_left")
     stacks = run.of_kind("STACK")
     values[model.STACKS_RESERVED] = sum(s.int("size") for s in stacks)
     values[model.STACKS_USED] = sum(s.int("used") for s in stacks)

@@ -66,6 +66,7 @@ RAM = MetricId("footprint", "ram", unit="bytes")
 HEAP_FPRIME_PEAK = MetricId("heap", "fprime_peak", unit="bytes")
 HEAP_REQUESTED = MetricId("heap", "requested", unit="bytes")
 HEAP_LINK = MetricId("heap", "link_buffers", unit="bytes")
+HEAP_ARENA_LEFT = MetricId("heap", "arena_left", unit="bytes")
 STACKS_RESERVED = MetricId("stacks", "reserved", unit="bytes")
 STACKS_USED = MetricId("stacks", "used_peak", unit="bytes")
 
@@ -105,6 +106,7 @@ LABELS: dict[MetricId, str] = {
     HEAP_FPRIME_PEAK: "heap, F´ allocator peak (bytes)",
     HEAP_REQUESTED: "heap, all users (bytes requested)",
     HEAP_LINK: "heap, ground link's buffers and queues (bytes, part of the F´ allocator's)",
+    HEAP_ARENA_LEFT: "heap, arena left after start-up (bytes, largest free block)",
     STACKS_RESERVED: "stacks reserved (bytes)",
     STACKS_USED: "stacks used, peak (bytes)",
     **{floor_latency(stat): f"kernel floor of its dispatch path, latency {stat} (us)" for stat in STATS},

@@ -31,8 +31,9 @@ def test_json_carries_records_and_footprints():
 
 def test_the_ground_links_share_of_the_heap_is_a_metric_of_its_own():
     heap = ("KIT HEAP fprime_peak=9000 fprime_allocations=40 bytes=11000 allocations=50 frees=0 after_init=0 "
-            "failures=0 arena=13312 link_buffers=2100")
+            "failures=0 arena=13312 arena_left=1200 link_buffers=2100")
     text = console_log("rtos").replace("KIT END", heap + "\nKIT END", 1)
     values = metrics.metrics(metrics.VariantData("rtos", Footprint(1, 2, 262144, 65536), console.parse(text)))
     assert values[model.HEAP_LINK] == 2100
+    assert values[model.HEAP_ARENA_LEFT] == 1200
     assert values[model.HEAP_FPRIME_PEAK] == 9000

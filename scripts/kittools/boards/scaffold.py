@@ -33,6 +33,8 @@ TODOS: dict[str, tuple[str, ...]] = {
         "Re-measure the stacks on this board from the 'KIT STACK' lines of a run of every",
         "scenario, with headroom: MAIN_STACK_SIZE per model, DYNAMIC_THREAD_STACK_SIZE (rtos).",
         "Stack protection (rtos): HW_STACK_PROTECTION where the part has an MPU, else STACK_SENTINEL.",
+        "The C heap's arena per model (COMMON_LIBC_MALLOC_ARENA_SIZE) is what the reference board's runs used:",
+        "the same code uses the same heap; re-measure from 'KIT HEAP arena_left' if this board's build differs.",
         "F´ services a model leaves out (KIT_SERVICE_CDH, KIT_SERVICE_PARAMS, KIT_SERVICE_FILES,",
         "KIT_SERVICE_FILE_UPLINK, KIT_SERVICE_SEQUENCER) are the reference board's RAM decisions, with its",
         "numbers: turn on what this board holds, and say why for what stays off.",

@@ -173,7 +173,7 @@ def _slug(knob: str) -> str:
 
 def nominal_outcome(text: str) -> tuple[bool, str, dict[str, int]]:
     """A nominal run's console: whether it passed, why not (a halted run has
-    no END line: its HALT, FATAL or HEAP line says why), and LATENCY_RG's
+    no END line: its ARENA, HALT, FATAL or HEAP line says why), and LATENCY_RG's
     dispatch latency (p50, max)."""
     records = [r for r in map(console.parse_line, text.splitlines()) if r is not None]
     passed = any(r.kind == "END" and r.fields.get("result") == "PASS" for r in records)
@@ -181,8 +181,9 @@ def nominal_outcome(text: str) -> tuple[bool, str, dict[str, int]]:
     fastest = max(groups, key=lambda r: int(r.fields["hz"]), default=None)
     latency = {key: int(fastest.fields[f"latency_{key}"]) for key in ("p50", "max")
                if fastest is not None and f"latency_{key}" in fastest.fields}
+    why = ("ARENA", "HALT", "FATAL", "HEAP")
     note = "" if passed else "; ".join(f"{r.kind} {' '.join(f'{k}={v}' for k, v in r.fields.items())}"
-                                       for r in records if r.kind in ("HALT", "FATAL", "HEAP"))[:300] or "no END PASS"
+                                       for r in records if r.kind in why)[:300] or "no END PASS"
     return passed, note, latency
 
 
@@ -321,7 +322,7 @@ def write_report(tables: list[Table], out_dir: Path) -> list[Path]:
         "Each row is one build: the profile's, or the profile with one knob moved; ΔROM and ΔRAM are against the "
         "profile's build, static RAM as the linker places it (a knob that moves memory into the C heap shows the "
         "arena it needs).",
-        "Each build then plays the nominal run under QEMU; a row that fails says why (its HALT, FATAL or HEAP "
+        "Each build then plays the nominal run under QEMU; a row that fails says why (its ARENA, HALT, FATAL or HEAP "
         "line).", CAVEAT])
     sections: list[Section] = [intro, *tables]
     out_dir.mkdir(parents=True, exist_ok=True)
