@@ -8,6 +8,7 @@ add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/Os")
 
 set(KIT_MODEL_SOURCES
     "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp"
+    "${CMAKE_CURRENT_LIST_DIR}/ThreadPointer.cpp"  # errno's thread-local block: Zephyr gives none without threads
     "${CMAKE_CURRENT_LIST_DIR}/ModelChecks.cpp"  # build-time checks that the topology fits this model
 )
 set(KIT_MODEL_IMPLEMENTATIONS

@@ -190,10 +190,14 @@ bool commands(const Uplink::Frame* frames, FwSizeType count) {
 
 bool downlinkAndTicks() {
     const FwEventIdType noOpEvent = cmdDisp.getIdBase() + CmdDispIds::NO_OP_RECEIVED;
-    printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u uncounted=%u\n",
+    // Packets the link's queue had no room for: a result of the model (a
+    // cooperative loop hands it a burst at once), not a failure of the run
+    const FwEventIdType overflowEvent = comQueue.getIdBase() + ComQueueIds::QUEUE_OVERFLOW;
+    printk("KIT DOWNLINK events=%u telemetry=%u malformed=%u noop_events=%u uncounted=%u queue_overflows=%u\n",
            static_cast<unsigned>(downlink.eventPackets()), static_cast<unsigned>(downlink.telemetryPackets()),
            static_cast<unsigned>(downlink.malformedPackets()), static_cast<unsigned>(downlink.eventCount(noOpEvent)),
-           static_cast<unsigned>(downlink.uncountedEvents()));
+           static_cast<unsigned>(downlink.uncountedEvents()),
+           static_cast<unsigned>(downlink.eventCount(overflowEvent)));
     printk("KIT TICKS driven=%u fired=%u\n", static_cast<unsigned>(timing.ticksDriven()),
            static_cast<unsigned>(TickClock::ticksFired()));
     return downlink.malformedPackets() == 0 && downlink.uncountedEvents() == 0;

@@ -2,8 +2,8 @@
 // ======================================================================
 // \title  ServiceIds.hpp
 // \brief  Opcodes and event IDs of F´'s services the kit needs by name: the
-//         dispatcher's (in the form the build chose), health's and
-//         version's (the kit's instruments' are
+//         dispatcher's (in the form the build chose), health's,
+//         version's and the link's queue's (the kit's instruments' are
 //         app/Subtopologies/Instruments/InstrumentIds.hpp)
 //
 // FPP generates them as protected members of each component base. These
@@ -20,6 +20,7 @@
 #else
 #include "Svc/CmdDispatcher/CommandDispatcherComponentAc.hpp"
 #endif
+#include "Svc/ComQueue/ComQueueComponentAc.hpp"
 #if defined(CONFIG_KIT_SERVICE_CDH)
 #include "Svc/Health/HealthComponentAc.hpp"
 #include "Svc/Version/VersionComponentAc.hpp"
@@ -39,6 +40,12 @@ struct CmdDispIds : CmdDispBase {
     static constexpr FwEventIdType MALFORMED_COMMAND = EVENTID_MALFORMEDCOMMAND;
     static constexpr FwEventIdType INVALID_COMMAND = EVENTID_INVALIDCOMMAND;
     static constexpr FwEventIdType OPCODE_ERROR = EVENTID_OPCODEERROR;
+};
+
+//! The ground link's downlink queue: a packet it had no room for (F´'s
+//! ComQueue throttles the event until that queue has room again)
+struct ComQueueIds : Svc::ComQueueComponentBase {
+    static constexpr FwEventIdType QUEUE_OVERFLOW = EVENTID_QUEUEOVERFLOW;
 };
 
 #if defined(CONFIG_KIT_SERVICE_CDH)

@@ -46,6 +46,9 @@ def metrics(data: VariantData) -> dict[MetricId, float]:
             values[model.HEAP_LINK] = heap.int("link_buffers")
         if "arena_left" in heap.fields:
             values[model.HEAP_ARENA_LEFT] = heap.int("arena_left")
+    downlink = run.of_kind("DOWNLINK")
+    if downlink and "queue_overflows" in downlink[0].fields:
+        values[model.LINK_QUEUE_OVERFLOWS] = downlink[0].int("queue_overflows")
     stacks = run.of_kind("STACK")
     values[model.STACKS_RESERVED] = sum(s.int("size") for s in stacks)
     values[model.STACKS_USED] = sum(s.int("used") for s in stacks)

@@ -67,6 +67,9 @@ HEAP_FPRIME_PEAK = MetricId("heap", "fprime_peak", unit="bytes")
 HEAP_REQUESTED = MetricId("heap", "requested", unit="bytes")
 HEAP_LINK = MetricId("heap", "link_buffers", unit="bytes")
 HEAP_ARENA_LEFT = MetricId("heap", "arena_left", unit="bytes")
+#: QueueOverflow events of the ground link's ComQueue in the run (throttled:
+#: one per spell of a full queue, not one per packet lost)
+LINK_QUEUE_OVERFLOWS = MetricId("link", "queue_overflows")
 STACKS_RESERVED = MetricId("stacks", "reserved", unit="bytes")
 STACKS_USED = MetricId("stacks", "used_peak", unit="bytes")
 
@@ -107,6 +110,7 @@ LABELS: dict[MetricId, str] = {
     HEAP_REQUESTED: "heap, all users (bytes requested)",
     HEAP_LINK: "heap, ground link's buffers and queues (bytes, part of the F´ allocator's)",
     HEAP_ARENA_LEFT: "heap, arena left after start-up (bytes, largest free block)",
+    LINK_QUEUE_OVERFLOWS: "ground link's downlink queue overflows (F´'s ComQueue events)",
     STACKS_RESERVED: "stacks reserved (bytes)",
     STACKS_USED: "stacks used, peak (bytes)",
     **{floor_latency(stat): f"kernel floor of its dispatch path, latency {stat} (us)" for stat in STATS},

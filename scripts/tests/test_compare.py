@@ -37,3 +37,10 @@ def test_the_ground_links_share_of_the_heap_is_a_metric_of_its_own():
     assert values[model.HEAP_LINK] == 2100
     assert values[model.HEAP_ARENA_LEFT] == 1200
     assert values[model.HEAP_FPRIME_PEAK] == 9000
+
+
+def test_the_link_queues_overflows_are_a_metric():
+    line = "KIT DOWNLINK events=24 telemetry=81 malformed=0 noop_events=1 uncounted=0 queue_overflows=2"
+    text = console_log("baremetal").replace("KIT END", line + "\nKIT END", 1)
+    values = metrics.metrics(metrics.VariantData("baremetal", Footprint(1, 2, 262144, 65536), console.parse(text)))
+    assert values[model.LINK_QUEUE_OVERFLOWS] == 2

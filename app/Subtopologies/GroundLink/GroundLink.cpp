@@ -78,8 +78,8 @@ void configure(CountingAllocator& allocator, bool takesFilePackets, const Fw::Qu
     // the file downlink keeps the slot: ComQueue's depth telemetry asserts
     // on a queue of depth 0.
     Svc::ComQueue::QueueConfigurationTable queues;
-    queues.entries[0] = {Link::eventDepth, 0};
-    queues.entries[1] = {Link::telemetryDepth, 1};
+    queues.entries[0] = {CONFIG_KIT_LINK_EVENT_DEPTH, 0};
+    queues.entries[1] = {CONFIG_KIT_LINK_TELEMETRY_DEPTH, 1};
     queues.entries[2] = {1, 2};
     comQueue.configure(queues, 0, allocator);
     s_bufferBytes = allocator.currentBytes() - before;

@@ -17,9 +17,6 @@ module Kit {
   @ The ground link's sizes (F´'s ComFprime chain with the kit's numbers:
   @ F´'s defaults are sized for a Linux host)
   module Link {
-    @ Packets each downlink queue holds while the link is busy
-    constant eventDepth = 8
-    constant telemetryDepth = 4
     @ One pool for every link buffer: a frame of the largest packet
     @ (FW_COM_BUFFER_MAX_SIZE plus the F´ frame's 8 B header and 4 B CRC)
     @ and the UART's receive chunks
