@@ -27,6 +27,18 @@ def test_knobs_are_the_switches_two_profiles_differ_in_and_every_other_assert_le
     assert found[5].settings == ("CONFIG_FPRIME_OBJECT_NAMES=y",)
 
 
+def test_a_knob_that_takes_heap_grows_the_profile_builds_arena():
+    """TlmLinearChan's table comes out of the heap: its build's arena is the
+    profile build's (a board sizes it to what its runs use) plus the table's."""
+    built = {"CONFIG_KIT_MODEL_BAREMETAL": "y", "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE": "16512"}
+    linear = next(k for k in ablation.knobs({}, {}, "baremetal", built) if "TlmLinearChan" in k.name)
+    assert linear.settings == ("CONFIG_KIT_TELEMETRY_LINEAR=y",
+                               f"CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE={16512 + linear.heap_bytes}")
+    # No build to read: the knob as it is
+    assert next(k for k in ablation.knobs({}, {}, "baremetal") if "TlmLinearChan" in k.name).settings == (
+        "CONFIG_KIT_TELEMETRY_LINEAR=y",)
+
+
 def test_the_compiler_knobs_move_what_the_kit_sets():
     """Each compiler knob moves an option off the model's own choice: LTO is on
     in the baremetal model (baremetal/Kconfig.model), so its knob there turns it

@@ -25,7 +25,7 @@ import re
 import subprocess
 import time
 from collections.abc import Callable
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -64,14 +64,21 @@ class Knob:
     name: str
     settings: tuple[str, ...] = ()  # CONFIG_X=value
     models: tuple[str, ...] = ()  # the execution models it applies to, whatever the policy (empty: all)
+    #: bytes its build takes from the C heap beyond the profile's: its arena
+    #: grows by them from the profile build's (a board sizes that arena to
+    #: what its runs use, boards/qemu_cortex_m3/Kconfig.defconfig)
+    heap_bytes: int = 0
 
 
 #: Knobs that are not F´ switches: a service's other form, where a model has it
 SERVICE_KNOBS = (
     # fprime-baremetal builds TlmLinearChan for its own model only; its table
-    # comes out of the C heap, whose arena grows to hold it (app/Kconfig)
-    Knob("telemetry store: TlmChan -> TlmLinearChan",
-         ("CONFIG_KIT_TELEMETRY_LINEAR=y", "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE=15360"), ("baremetal",)),
+    # comes out of the C heap: an entry per channel, about the 76 B of a
+    # TlmChan bucket (whose two tables it replaces), for up to 100 channels
+    # (the reference has 74 on qemu_cortex_m3's baremetal). A deployment with
+    # more says so in its row (KIT ARENA exhausted request=)
+    Knob("telemetry store: TlmChan -> TlmLinearChan", ("CONFIG_KIT_TELEMETRY_LINEAR=y",), ("baremetal",),
+         heap_bytes=8192),
     # fprime-baremetal's dispatcher: no task, stack or queue; its tables
     # from F´'s allocator (baremetal_passive's policy selects it already)
     Knob("command dispatcher: CommandDispatcher -> PassiveCmdDispatcher",
@@ -133,8 +140,19 @@ def knobs(base: dict[str, str], other: dict[str, str], model: str, built: dict[s
         return built is not None and all(built.get(k, "n") == v.strip('"')
                                          for k, v in (s.split("=", 1) for s in knob.settings))
 
-    services = [k for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
+    services = [with_heap(k, built) for k in SERVICE_KNOBS if (not k.models or model in k.models) and not has(k)]
     return found + services + [k for k in COMPILER_KNOBS if not has(k)]
+
+
+ARENA = "CONFIG_COMMON_LIBC_MALLOC_ARENA_SIZE"
+
+
+def with_heap(knob: Knob, built: dict[str, str] | None) -> Knob:
+    """The knob with its arena: the profile build's grown by what the knob
+    takes from the heap (none given, or no build: as it is)."""
+    if not knob.heap_bytes or built is None or ARENA not in built:
+        return knob
+    return replace(knob, settings=(*knob.settings, f"{ARENA}={int(built[ARENA]) + knob.heap_bytes}"))
 
 
 _OVERFLOW = re.compile(r"region `(?P<region>\w+)' overflowed by (?P<bytes>\d+) bytes")
