@@ -75,7 +75,7 @@ SERVICE_KNOBS = (
     # fprime-baremetal builds TlmLinearChan for its own model only; its table
     # comes out of the C heap: an entry per channel, about the 76 B of a
     # TlmChan bucket (whose two tables it replaces), for up to 100 channels
-    # (the reference has 74 on qemu_cortex_m3's baremetal). A deployment with
+    # (the reference's baremetal build on qemu_cortex_m3 has 71). A deployment with
     # more says so in its row (KIT ARENA exhausted request=)
     Knob("telemetry store: TlmChan -> TlmLinearChan", ("CONFIG_KIT_TELEMETRY_LINEAR=y",), ("baremetal",),
          heap_bytes=8192),
