@@ -33,8 +33,9 @@ namespace {
 
 //! The control block the toolchain expects before the data (two words)
 constexpr size_t CONTROL_BLOCK = 2 * sizeof(uintptr_t);
-//! The build's thread-local data is picolibc's errno (4 B); room for more
-constexpr size_t BLOCK_BYTES = 64;
+//! The build's thread-local data is picolibc's errno (4 B), and no more:
+//! nucleo_g071rb's small build had 28 B of RAM to spare
+constexpr size_t BLOCK_BYTES = 16;
 alignas(8) uint8_t s_block[BLOCK_BYTES];
 
 int setThreadPointer() {
