@@ -78,3 +78,12 @@ def test_a_run_that_failed_nothing_says_no_failures(monkeypatch, capsys):
     steps.add_qemu("twister", lambda: Tally(5, 0))
     assert steps.run() == 0
     assert "what failed" not in capsys.readouterr().out
+
+
+def test_a_step_that_raises_is_one_failure_and_the_lane_goes_on():
+    def broken() -> Tally:
+        raise ValueError("Unknown type name: FwEventIdType")
+
+    steps = [plan.Step("broken", broken), plan.Step("after", lambda: Tally(3, 0))]
+    total = plan.run_steps(steps)
+    assert (total.passed, total.failed) == (3, 1)

@@ -13,6 +13,7 @@ import random
 import re
 import socket
 import struct
+import threading
 import time
 import zlib
 from collections import Counter, deque
@@ -21,6 +22,21 @@ from pathlib import Path
 
 from kittools.link.dictionary import Dictionary
 from kittools.workspace import KitError
+
+_GDS_CONFIG = threading.Lock()
+
+
+def gds_config_made() -> None:
+    """fprime-gds's ConfigManager, made whole before any of its readers.
+    It is a singleton whose first construction is not thread-safe: a
+    thread that gets it between its creation and its defaults finds no
+    types (a CI run's fuzzer, its decoder made while another build's checks
+    made theirs: "Unknown type name: FwEventIdType"). Call it before
+    anything of fprime-gds's that decodes or loads a dictionary."""
+    from fprime_gds.common.utils.config_manager import ConfigManager
+
+    with _GDS_CONFIG:
+        ConfigManager()
 
 START_WORD = 0xDEADBEEF
 HEADER = struct.Struct(">II")  # start word, length (F´'s FprimeProtocol.FrameHeader)
@@ -96,6 +112,8 @@ class Downlink:
         from fprime_gds.common.decoders.ch_decoder import ChDecoder
         from fprime_gds.common.decoders.event_decoder import EventDecoder
         from fprime_gds.common.models.dictionaries import Dictionaries
+
+        gds_config_made()
 
         #: The dictionary's names: the dispatcher's NO_OP and its events
         self.dictionary = Dictionary.read(dictionary)

@@ -34,6 +34,7 @@ from kittools.link.client import (
     command,
     file_path_field,
     frame,
+    gds_config_made,
 )
 from kittools.link.dictionary import Dictionary
 from kittools.link.file_fuzz import END_FIELDS, SCRATCH_CONSTANT, START_FIELDS, cfdp_checksum
@@ -69,6 +70,7 @@ def compile_sequence(dictionary: Path, noop_command: str, records: int = SEQUENC
     """The sequence's binary, as fprime-seqgen writes it for this dictionary."""
     from fprime_gds.common.tools.seqgen import generateSequence  # the GDS's own compiler
 
+    gds_config_made()
     with tempfile.TemporaryDirectory(prefix="kit-seq-") as folder:
         text, binary = Path(folder) / "sweep.seq", Path(folder) / "sweep.bin"
         text.write_text(sequence_text(noop_command, records))

@@ -9,6 +9,7 @@ import functools
 import json
 import sys
 import time
+import traceback
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, Protocol, TypeVar
@@ -200,7 +201,11 @@ def _on_raw_link(platform: str, build: Path, log_dir: Path, checks: list[_BuildC
         (logs / file_name).unlink(missing_ok=True)
     tally = foreign_dictionary_build(build, name, logs)
     for check in checks:
-        tally.add(check(build, name, logs))
+        try:
+            tally.add(check(build, name, logs))
+        except Exception:  # noqa: BLE001 - one check's error is its failure; the build's other checks still run
+            say(f"  {name}: {getattr(check, '__name__', check)}: FAIL, it raised:\n{traceback.format_exc()}")
+            tally.add(Tally(failed=1))
     return tally
 
 

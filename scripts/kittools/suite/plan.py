@@ -11,6 +11,7 @@ from __future__ import annotations
 import concurrent.futures
 import threading
 import time
+import traceback
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -86,7 +87,13 @@ def run_steps(steps: list[Step]) -> Tally:
 def run_step(step: Step) -> Tally:
     say(f"{step.name} ...{' (beside the next steps)' if step.beside else ''}")
     started = time.monotonic()
-    tally = step.run()
+    try:
+        tally = step.run()
+    except Exception:  # noqa: BLE001 - any error a step raises is its failure, not the run's end
+        # Counted as one failure, its traceback said: every run ends with
+        # its count (a CI run once ended in a traceback halfway through)
+        say(f"{step.name}: FAIL, it raised:\n{traceback.format_exc()}")
+        tally = Tally(failed=1)
     say(f"{step.name}: {tally.passed} passed, {tally.failed} failed ({time.monotonic() - started:.0f} s)")
     return tally
 
