@@ -23,6 +23,7 @@
 static_assert(CMD_DISPATCHER_DISPATCH_TABLE_SIZE >= KIT_DICTIONARY_COMMANDS,
               "the command dispatch table (CMD_DISPATCHER_DISPATCH_TABLE_SIZE) is smaller than the dictionary's "
               "commands: raise CONFIG_KIT_DEPLOYMENT_COMMANDS in the deployment's deployment.conf (app/Kconfig)");
-static_assert(TLMCHAN_HASH_BUCKETS >= KIT_DICTIONARY_CHANNELS,
-              "the telemetry buckets (TLMCHAN_HASH_BUCKETS) are fewer than the dictionary's channels: raise "
+static_assert(TLMCHAN_HASH_BUCKETS >= KIT_DICTIONARY_CHANNELS - VERSION_SILENT_CHANNELS,
+              "the telemetry buckets (TLMCHAN_HASH_BUCKETS) are fewer than the dictionary's channels this build "
+              "can write (all but Svc.Version's silent ones: app/config/TlmChanImplCfg.hpp.in): raise "
               "CONFIG_KIT_DEPLOYMENT_CHANNELS in the deployment's deployment.conf (app/Kconfig)");

@@ -7,6 +7,7 @@
 # fprime-zephyr's cmake/toolchain/zephyr.cmake before find_package(Zephyr);
 # FPRIME_ZEPHYR_EXTRA_LOCATIONS, optional, adds module locations.
 include_guard(GLOBAL)
+set(FPRIME_ZEPHYR_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 
 # fprime-fpp's fpp-* commands are Python wrappers that start the native
 # `fpp` binary beside them with the subcommand: calling the binary directly
@@ -132,6 +133,14 @@ macro(fprime_zephyr_setup)
         endif()
     endforeach()
     fprime_setup_included_code()
+    # F´'s CRC-32 from a table in flash, not one built in RAM (crc32_libcrc.c
+    # says why): this file in place of libcrc's in F´'s Utils_Hash
+    if(CONFIG_FPRIME_CRC32_IN_FLASH AND TARGET Utils_Hash)
+        get_target_property(FPRIME_ZEPHYR_HASH_SOURCES Utils_Hash SOURCES)
+        list(FILTER FPRIME_ZEPHYR_HASH_SOURCES EXCLUDE REGEX "/libcrc/lib_crc\\.c$")
+        set_property(TARGET Utils_Hash PROPERTY SOURCES ${FPRIME_ZEPHYR_HASH_SOURCES}
+                     "${FPRIME_ZEPHYR_MODULE_DIR}/crc32_libcrc.c")
+    endif()
     # After every module of the application has registered its configuration
     cmake_language(DEFER DIRECTORY "${CMAKE_SOURCE_DIR}" CALL fprime_zephyr_keep_config_times)
     # Build only what the deployment links: the framework and its libraries

@@ -86,3 +86,20 @@ def test_sizing_refuses_a_log_without_queues(tmp_path, capsys):
     assert "has no KIT QUEUE lines" in capsys.readouterr().err
     assert cli.main(["sizing", str(tmp_path), "--log", str(tmp_path / "missing.log")]) == 2
     assert "no console log" in capsys.readouterr().err
+
+
+def test_version_channels_no_path_writes_are_counted_out(tmp_path):
+    # Svc.Version's dictionary: framework, project, ten library slots, ten
+    # custom ones; a build with two libraries writes four of them
+    names = ["version.FrameworkVersion", "version.ProjectVersion"]
+    names += [f"version.LibraryVersion{i:02}" for i in range(1, 11)]
+    names += [f"version.CustomVersion{i:02}" for i in range(1, 11)]
+    channels = [{"name": f"Kit.{n}"} for n in names] + [{"name": "Kit.health.PingLateWarnings"}]
+    assert sizing.silent_version_channels(channels, 2) == 18
+    assert sizing.silent_version_channels(channels, 10) == 10
+    # F´'s generated count, read from the build; every slot when it is missing
+    assert sizing.version_libraries(tmp_path) == 10
+    (tmp_path / "versions").mkdir()
+    (tmp_path / "versions" / "version.cpp").write_text(
+        "    const FwIndexType Version::LIBRARY_VERSIONS_COUNT = 2; \n")
+    assert sizing.version_libraries(tmp_path) == 2

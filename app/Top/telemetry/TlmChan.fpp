@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # The telemetry store: F´'s TlmChan (two hash tables, double buffered, in
-# the object; sized in app/config/TlmChanImplCfg.hpp). The build takes this
+# the object; sized in app/config/TlmChanImplCfg.hpp.in). The build takes this
 # file or TlmLinearChan.fpp beside it (app/Top/CMakeLists.txt).
 module Kit {
 

@@ -14,6 +14,7 @@ frees one). `check` fails on those.
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
@@ -141,9 +142,38 @@ def largest_packet(dictionary: dict[str, Any], config: dict[str, str] | None = N
     return max(candidates) if candidates else (0, "nothing")
 
 
-def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str], active: int) -> list[Advice]:
+#: Svc.Version's channels: ten custom versions, set only through its
+#: setVersion port, and a library slot for each of up to ten F´ libraries
+_VERSION_SLOT = re.compile(r"\.(CustomVersion|LibraryVersion)(\d\d)$")
+_LIBRARY_COUNT = re.compile(r"LIBRARY_VERSIONS_COUNT\s*=\s*(\d+)")
+
+
+def silent_version_channels(channels: list[dict[str, Any]], libraries: int) -> int:
+    """Svc.Version's channels no path of the build writes, which TlmChan's
+    buckets need not hold (app/config/TlmChanImplCfg.hpp.in): every custom
+    version (the kit leaves setVersion unconnected) and the library slots
+    past the build's `libraries`."""
+    silent = 0
+    for channel in channels:
+        slot = _VERSION_SLOT.search(channel["name"])
+        if slot and (slot.group(1) == "CustomVersion" or int(slot.group(2)) > libraries):
+            silent += 1
+    return silent
+
+
+def version_libraries(build_dir: Path) -> int:
+    """The F´ libraries whose versions the build's Svc.Version writes, from
+    F´'s generated versions/version.cpp (10, every slot, when there is none)."""
+    generated = build_dir / "versions" / "version.cpp"
+    found = _LIBRARY_COUNT.search(generated.read_text()) if generated.is_file() else None
+    return int(found.group(1)) if found else 10
+
+
+def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str], active: int,
+            libraries: int) -> list[Advice]:
     commands = len({c["name"] for c in dictionary.get("commands", [])})
     channels = dictionary.get("telemetryChannels", [])
+    written = len(channels) - silent_version_channels(channels, libraries)
     with_channels = len({c["name"].split(".")[-2] for c in channels})
     found: list[Advice] = []
     packet, largest = largest_packet(dictionary, config)
@@ -166,11 +196,12 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
     slots = info.member("Svc::TlmChan::TlmSet", "slots")
     if sets is not None and buckets is not None and slots is not None:
         found.append(Advice("telemetry buckets (TlmChan)", "CONFIG_KIT_DEPLOYMENT_CHANNELS (app/Kconfig; "
-                            "the services' in app/config/TlmChanImplCfg.hpp)",
-                            buckets.count, len(channels), buckets.element_bytes * sets.count,
-                            f"{len(channels)} channels in the dictionary; a bucket is never freed"))
+                            "the services' in app/config/TlmChanImplCfg.hpp.in)",
+                            buckets.count, written, buckets.element_bytes * sets.count,
+                            f"{written} channels the build can write of the dictionary's {len(channels)}; "
+                            "a bucket is never freed"))
         found.append(Advice("telemetry hash slots (TlmChan)", "TLMCHAN_NUM_TLM_HASH_SLOTS "
-                            "(app/config/TlmChanImplCfg.hpp)", slots.count, with_channels,
+                            "(app/config/TlmChanImplCfg.hpp.in)", slots.count, with_channels,
                             slots.element_bytes * sets.count,
                             f"baremetal-size's rule: one per component with channels ({with_channels}); fewer "
                             "only lengthens the search", must_fit=False))
@@ -178,8 +209,9 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
     linear_entries = info.enumerator("TlmLinearChan.cpp", "TLMCHAN_HASH_BUCKETS") if linear is not None else None
     if linear is not None and linear_entries is not None:
         found.append(Advice("telemetry table (TlmLinearChan, heap)", "CONFIG_KIT_DEPLOYMENT_CHANNELS "
-                            "(app/Kconfig)", linear_entries, len(channels), info.size(linear),
-                            f"{len(channels)} channels in the dictionary; an entry is never freed"))
+                            "(app/Kconfig)", linear_entries, written, info.size(linear),
+                            f"{written} channels the build can write of the dictionary's {len(channels)}; "
+                            "an entry is never freed"))
     runner = info.member("Os::Baremetal::TaskRunner", "m_task_table")
     if runner is not None:
         found.append(Advice("TaskRunner task table", "TASK_CAPACITY (fprime-baremetal "
@@ -218,7 +250,7 @@ def measure(build_dir: Path, queue_records: list[dict[str, str]] | None = None) 
     with DebugInfo(build_dir) as info:
         cost = ports.measure(info)
         active = sum(1 for i in info.instances() if info.derives_from(i.cls, "ActiveComponentBase"))
-        advice = _tables(info, dictionary, config, active)
+        advice = _tables(info, dictionary, config, active, version_libraries(build_dir))
     return Sizing(advice + queue_advice(queue_records or []), cost)
 
 
