@@ -97,6 +97,8 @@ def test_version_channels_no_path_writes_are_counted_out(tmp_path):
     channels = [{"name": f"Kit.{n}"} for n in names] + [{"name": "Kit.health.PingLateWarnings"}]
     assert sizing.silent_version_channels(channels, 2) == 18
     assert sizing.silent_version_channels(channels, 10) == 10
+    # a channel of that name in a component that is not Svc.Version counts
+    assert sizing.silent_version_channels([{"name": "Kit.mine.CustomVersion01"}], 2) == 0
     # F´'s generated count, read from the build; every slot when it is missing
     assert sizing.version_libraries(tmp_path) == 10
     (tmp_path / "versions").mkdir()

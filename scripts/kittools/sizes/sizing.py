@@ -152,11 +152,15 @@ def silent_version_channels(channels: list[dict[str, Any]], libraries: int) -> i
     """Svc.Version's channels no path of the build writes, which TlmChan's
     buckets need not hold (app/config/TlmChanImplCfg.hpp.in): every custom
     version (the kit leaves setVersion unconnected) and the library slots
-    past the build's `libraries`."""
+    past the build's `libraries`. Svc.Version's instances are the ones with
+    a FrameworkVersion channel; another component's channel of such a name
+    is not one of them."""
+    versions = {c["name"].rpartition(".")[0] for c in channels if c["name"].endswith(".FrameworkVersion")}
     silent = 0
     for channel in channels:
         slot = _VERSION_SLOT.search(channel["name"])
-        if slot and (slot.group(1) == "CustomVersion" or int(slot.group(2)) > libraries):
+        if (slot and channel["name"].rpartition(".")[0] in versions
+                and (slot.group(1) == "CustomVersion" or int(slot.group(2)) > libraries)):
             silent += 1
     return silent
 
