@@ -117,10 +117,6 @@ void configureTopology(const TopologyState& state) {
     osTime.set_epoch(Fw::Time(0, 0), now);
 
     GroundLink::configure(state.allocator, FILE_UPLINKS > 0, events);
-#if defined(CONFIG_KIT_TELEMETRY_LINEAR)
-    // fprime-baremetal's telemetry store takes its one table from the allocator
-    tlmSend.setup(TELEMETRY_STORE_ID, state.allocator);
-#endif
 }
 
 }  // namespace
@@ -140,6 +136,12 @@ void setupTopology(const TopologyState& state) {
     // fprime-baremetal's dispatcher takes its dispatch and tracking tables
     // from F´'s allocator, and needs them before any command registers
     cmdDisp.setup(DISPATCHER_TABLES_ID, state.allocator);
+#endif
+#if defined(CONFIG_KIT_TELEMETRY_LINEAR)
+    // fprime-baremetal's telemetry store takes its one table from F´'s
+    // allocator, and needs it before any component writes a channel (the
+    // services' configuration does: it asserted, set up after it)
+    tlmSend.setup(TELEMETRY_STORE_ID, state.allocator);
 #endif
     regCommands();
     configComponents(state);
