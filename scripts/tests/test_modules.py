@@ -79,6 +79,11 @@ def test_the_ground_link_is_its_own_layer():
     assert by_layer.classify(":/_ZN3Kit10controllerE", deployment=KIT) == by_layer.KIT
     dispatcher = "deps/fprime/Svc/CmdDispatcher/CommandDispatcherImpl.cpp/f"
     assert by_layer.classify(dispatcher, "WORKSPACE") == by_layer.SERVICES
+    # The kit's telemetry store is F´'s service in another form, as TlmChan
+    assert by_layer.classify("app/Components/TlmTable/TlmTable.cpp/f", "WORKSPACE") == by_layer.SERVICES
+    assert by_layer.classify("app/Components/TlmTable/TlmTableComponentAc.cpp/f", "OUTPUT_DIR") == by_layer.SERVICES
+    assert by_layer.instance_layer("Kit", "Kit::TlmTable") == by_layer.SERVICES
+    assert by_layer.instance_layer("Kit", "Svc::TlmChan") == by_layer.SERVICES
 
 
 def test_each_subtopology_and_the_instruments_are_layers_of_their_own():

@@ -15,8 +15,9 @@ from kittools.workspace import VARIANTS, KitError, board_dir_name
 # What to shrink when a resource is short, from docs/porting.md, "Memory budget"
 _LEVERS = {
     "flash": "F´'s configuration (app/config/) and the components built in",
-    "RAM": "the baremetal model's telemetry store (CONFIG_KIT_TELEMETRY_LINEAR=y in the board's "
-           "Kconfig.defconfig: fprime-baremetal's TlmLinearChan, one table from the heap's arena: 4.9 KiB "
+    "RAM": "the telemetry store (the board's Kconfig.defconfig: CONFIG_KIT_TELEMETRY_TABLE=y, the kit's "
+           "TlmTable, one table in its object, in any model; or CONFIG_KIT_TELEMETRY_LINEAR=y in the baremetal "
+           "model, fprime-baremetal's TlmLinearChan, one table from the heap's arena: 4.9 KiB "
            "less on the reference's baremetal_passive, its larger arena included), "
            "F´'s health and version services (CONFIG_KIT_SERVICE_CDH=n in the board's Kconfig.defconfig, about 8 KiB), "
            "its parameter database (CONFIG_KIT_SERVICE_PARAMS=n, 4 to 6 KiB with its thread), "

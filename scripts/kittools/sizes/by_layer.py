@@ -60,6 +60,8 @@ _HEALTH_VERSION_COMPONENTS = ("Health", "Version")
 _FILE_HANDLING_COMPONENTS = ("PrmDb", "FileDownlink", "FileUplink")
 _SEQUENCER_COMPONENTS = ("CmdSequencer",)
 _INSTRUMENT_COMPONENTS = ("Timing", "PingProbe", "LinkHealth", "Load", "Faults", "Uplink", "Downlink")
+# The kit's own forms of F´'s services: its telemetry store (app/Top/telemetry/)
+_KIT_SERVICE_COMPONENTS = ("TlmTable",)
 
 # F´ classes by mangled name (length-prefixed: 6Health is not 10LinkHealth)
 _SVC_CLASS_LAYERS = (
@@ -85,6 +87,8 @@ def instance_layer(namespace: str, component: str) -> str:
     owner, _, name = component.rpartition("::")
     if owner == KIT_MODULE and name in _INSTRUMENT_COMPONENTS:
         return INSTRUMENTS
+    if owner == KIT_MODULE and name in _KIT_SERVICE_COMPONENTS:
+        return SERVICES
     if owner in _FPRIME_NAMESPACES:
         return next((layer for names, layer in _SVC_CLASS_LAYERS if name in names), SERVICES)
     return KIT
@@ -126,6 +130,7 @@ _BY_PATH = (
     # The kit's ground link subtopology's setup (its instances are the chain's)
     ("/app/Subtopologies/GroundLink/", GROUND_LINK),
     *((f"/app/Components/{name}/", INSTRUMENTS) for name in _INSTRUMENT_COMPONENTS),
+    *((f"/app/Components/{name}/", SERVICES) for name in _KIT_SERVICE_COMPONENTS),
     ("/app/src/", INSTRUMENTS),
     ("/app/scenarios/", INSTRUMENTS),
     # fprime-baremetal's services (its passive dispatcher, its linear
