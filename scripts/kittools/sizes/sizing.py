@@ -216,6 +216,13 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
                             "(app/Kconfig)", linear_entries, written, info.size(linear),
                             f"{written} channels the build can write of the dictionary's {len(channels)}; "
                             "an entry is never freed"))
+    table = info.member("Kit::TlmTable", "m_entries")
+    if table is not None:
+        found.append(Advice("telemetry table (TlmTable)", "CONFIG_KIT_DEPLOYMENT_CHANNELS (app/Kconfig; "
+                            "the services' in app/config/TlmChanImplCfg.hpp.in)", table.count, written,
+                            table.element_bytes,
+                            f"{written} channels the build can write of the dictionary's {len(channels)}; "
+                            "an entry is never freed"))
     runner = info.member("Os::Baremetal::TaskRunner", "m_task_table")
     if runner is not None:
         found.append(Advice("TaskRunner task table", "TASK_CAPACITY (fprime-baremetal "
