@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  TlmTable.cpp
-// \brief  The telemetry store in one table, read under its lock
+// \brief  The telemetry store in one table, read through a sequence lock
 // ======================================================================
 #include "app/Components/TlmTable/TlmTable.hpp"
 #include <Fw/Types/Assert.hpp>
 
 namespace Kit {
 
-// C++14: the constant's one definition, for a use by reference
+// C++14: the constants' one definitions, for a use by reference
 constexpr U32 TlmTable::ENTRIES;
+constexpr U32 TlmTable::READ_ATTEMPTS;
 
 TlmTable::TlmTable(const char* const compName) : TlmTableComponentBase(compName) {}
 
@@ -22,7 +23,7 @@ U32 TlmTable::find(FwChanIdType id) const {
     U32 index = static_cast<U32>(id) % ENTRIES;
     for (U32 probe = 0; probe < ENTRIES; probe++) {
         const Entry& entry = this->m_entries[index];
-        if (!entry.used || entry.id == id) {
+        if (entry.sequence.load(std::memory_order_relaxed) == 0 || entry.id == id) {
             return index;
         }
         index = (index + 1 == ENTRIES) ? 0 : index + 1;
@@ -31,26 +32,32 @@ U32 TlmTable::find(FwChanIdType id) const {
 }
 
 void TlmTable::TlmRecv_handler(FwIndexType portNum, FwChanIdType id, Fw::Time& timeTag, Fw::TlmBuffer& val) {
-    // Guarded port: the component's lock is held
+    // Guarded port: the component's lock keeps the other writers out; Run
+    // does not take it, and sees this write through the entry's sequence
     const U32 index = this->find(id);
     // More channels written than the build counted (the build checks its
     // dictionary against ENTRIES, so this is a channel outside it)
     FW_ASSERT(index < ENTRIES, static_cast<FwAssertArgType>(id));
     Entry& entry = this->m_entries[index];
-    if (!entry.used) {
-        entry.used = true;
-        entry.id = id;
+    const U32 sequence = entry.sequence.load(std::memory_order_relaxed);
+    if (sequence == 0) {
         this->m_used++;
     }
-    entry.updated = true;
+    // Odd: a writer is in the entry
+    entry.sequence.store(sequence + 1, std::memory_order_relaxed);
+    std::atomic_thread_fence(std::memory_order_release);
+    entry.id = id;
     entry.lastUpdate = timeTag;
     entry.buffer = val;
+    // Even again, never 0 (a free entry's) across the counter's wrap
+    const U32 next = (sequence + 2 == 0) ? 2 : sequence + 2;
+    entry.sequence.store(next, std::memory_order_release);
 }
 
 Fw::TlmValid TlmTable::TlmGet_handler(FwIndexType portNum, FwChanIdType id, Fw::Time& timeTag, Fw::TlmBuffer& val) {
-    // Guarded port: the component's lock is held
+    // Guarded port: no writer is in any entry
     const U32 index = this->find(id);
-    if (index < ENTRIES && this->m_entries[index].used) {
+    if (index < ENTRIES && this->m_entries[index].sequence.load(std::memory_order_relaxed) != 0) {
         val = this->m_entries[index].buffer;
         timeTag = this->m_entries[index].lastUpdate;
         return Fw::TlmValid::VALID;
@@ -60,20 +67,23 @@ Fw::TlmValid TlmTable::TlmGet_handler(FwIndexType portNum, FwChanIdType id, Fw::
     return Fw::TlmValid::INVALID;
 }
 
-Fw::SerializeStatus TlmTable::pack(Fw::TlmPacket& pkt, U32 index) {
-    Fw::SerializeStatus status = Fw::FW_SERIALIZE_OK;
-    // One entry under the lock at a time: a writer waits for this copy at
-    // most, never for the whole cycle
-    this->lock();
-    Entry& entry = this->m_entries[index];
-    if (entry.used && entry.updated) {
-        status = pkt.addValue(entry.id, entry.lastUpdate, entry.buffer);
-        if (status == Fw::FW_SERIALIZE_OK) {
-            entry.updated = false;
+bool TlmTable::snapshot(U32 index, Snapshot& copy) const {
+    const Entry& entry = this->m_entries[index];
+    for (U32 attempt = 0; attempt < READ_ATTEMPTS; attempt++) {
+        const U32 before = entry.sequence.load(std::memory_order_acquire);
+        if (before == entry.sentSequence || (before & 1U) != 0) {
+            return false;
+        }
+        copy.id = entry.id;
+        copy.time = entry.lastUpdate;
+        copy.buffer = entry.buffer;
+        std::atomic_thread_fence(std::memory_order_acquire);
+        if (entry.sequence.load(std::memory_order_relaxed) == before) {
+            copy.sequence = before;
+            return true;
         }
     }
-    this->unLock();
-    return status;
+    return false;
 }
 
 void TlmTable::Run_handler(FwIndexType portNum, U32 context) {
@@ -83,18 +93,23 @@ void TlmTable::Run_handler(FwIndexType portNum, U32 context) {
     Fw::TlmPacket pkt;
     Fw::SerializeStatus status = pkt.resetPktSer();
     FW_ASSERT(status == Fw::FW_SERIALIZE_OK, static_cast<FwAssertArgType>(status));
+    Snapshot copy;
     for (U32 index = 0; index < ENTRIES; index++) {
-        status = this->pack(pkt, index);
+        if (!this->snapshot(index, copy)) {
+            continue;
+        }
+        status = pkt.addValue(copy.id, copy.time, copy.buffer);
         if (status == Fw::FW_SERIALIZE_NO_ROOM_LEFT) {
-            // Full: send it (outside the lock), then the entry in a new one
+            // Full: send it, then the value in a new one
             this->PktSend_out(0, pkt.getBuffer(), 0);
             status = pkt.resetPktSer();
             FW_ASSERT(status == Fw::FW_SERIALIZE_OK, static_cast<FwAssertArgType>(status));
-            status = this->pack(pkt, index);
+            status = pkt.addValue(copy.id, copy.time, copy.buffer);
         }
         // Anything else: a channel's value larger than a packet
         FW_ASSERT(status == Fw::FW_SERIALIZE_OK, static_cast<FwAssertArgType>(status),
                   static_cast<FwAssertArgType>(index));
+        this->m_entries[index].sentSequence = copy.sequence;
     }
     if (pkt.getNumEntries() > 0) {
         this->PktSend_out(0, pkt.getBuffer(), 0);

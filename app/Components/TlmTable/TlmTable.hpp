@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // ======================================================================
 // \title  TlmTable.hpp
-// \brief  The telemetry store in one table, read under its lock (see
+// \brief  The telemetry store in one table, read through a sequence lock (see
 //         TlmTable.fpp and docs/sdd.md)
 // ======================================================================
 #ifndef KIT_TLMTABLE_HPP
 #define KIT_TLMTABLE_HPP
 
 #include <Fw/Tlm/TlmPacket.hpp>
+#include <atomic>
 #include <config/TlmChanImplCfg.hpp>
 #include "app/Components/TlmTable/TlmTableComponentAc.hpp"
 
@@ -30,13 +31,30 @@ class TlmTable final : public TlmTableComponentBase {
     U32 entriesUsed() const { return m_used; }
 
   private:
+    //! A write's sequence number marks each entry: odd while a writer is in
+    //! it, even when it is whole, 0 while no channel holds it. The 10 Hz
+    //! read copies an entry and keeps the copy only when the number did not
+    //! move meanwhile (a sequence lock): it never blocks a writer, and a
+    //! writer never waits for it.
     struct Entry {
         FwChanIdType id = 0;
-        bool used = false;     //!< A channel holds this entry
-        bool updated = false;  //!< Written since the last Run sent it
+        std::atomic<U32> sequence{0};
+        U32 sentSequence = 0;  //!< The sequence of the value the last Run sent (Run's alone)
         Fw::Time lastUpdate;
         Fw::TlmBuffer buffer;
     };
+
+    //! One entry's value as Run copied it
+    struct Snapshot {
+        FwChanIdType id = 0;
+        U32 sequence = 0;
+        Fw::Time time;
+        Fw::TlmBuffer buffer;
+    };
+
+    //! Copies Run makes of one entry before it gives it up to the next cycle:
+    //! each failed one was a writer preempting the copy
+    static constexpr U32 READ_ATTEMPTS = 3;
 
     void TlmRecv_handler(FwIndexType portNum, FwChanIdType id, Fw::Time& timeTag, Fw::TlmBuffer& val) override;
     Fw::TlmValid TlmGet_handler(FwIndexType portNum, FwChanIdType id, Fw::Time& timeTag, Fw::TlmBuffer& val) override;
@@ -45,13 +63,16 @@ class TlmTable final : public TlmTableComponentBase {
 
     //! The entry that holds channel id, or the free entry where it would go
     //! (open addressing: from id's home entry on, one entry at a time);
-    //! ENTRIES when the table is full and id is not in it
+    //! ENTRIES when the table is full and id is not in it. Writers' (under
+    //! the guarded ports' lock)
     U32 find(FwChanIdType id) const;
 
-    //! Entry index, under the lock: when written since the last Run, added to
-    //! pkt and marked sent, unless pkt has no room (FW_SERIALIZE_NO_ROOM_LEFT:
-    //! it stays marked)
-    Fw::SerializeStatus pack(Fw::TlmPacket& pkt, U32 index);
+    //! Entry index's value into copy, when it was written since the last Run
+    //! sent it and the copy is whole: false when nothing is new, when a
+    //! writer this call preempted is in the entry (it cannot go on before
+    //! this call ends), or after READ_ATTEMPTS copies a writer broke into;
+    //! the value then goes in the next cycle
+    bool snapshot(U32 index, Snapshot& copy) const;
 
     Entry m_entries[ENTRIES];
     U32 m_used = 0;

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # The telemetry store: the kit's TlmTable (one table in its object, read
-# under its lock: app/Components/TlmTable), with CONFIG_KIT_TELEMETRY_TABLE.
+# through a sequence lock: app/Components/TlmTable), with CONFIG_KIT_TELEMETRY_TABLE.
 # The same ports and telemetry as TlmChan.fpp beside it.
 module Kit {
 

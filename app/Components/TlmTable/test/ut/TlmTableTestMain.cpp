@@ -27,6 +27,11 @@ TEST(TlmTable, AChannelPastTheTableAsserts) {
     tester.aChannelPastTheTableAsserts();
 }
 
+TEST(TlmTable, AValueBeingWrittenGoesInTheNextCycle) {
+    Kit::TlmTableTester tester;
+    tester.aValueBeingWrittenGoesInTheNextCycle();
+}
+
 int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();

@@ -128,4 +128,21 @@ void TlmTableTester::aChannelPastTheTableAsserts() {
     EXPECT_DEATH(this->write(TlmTable::ENTRIES, 0), "");
 }
 
+void TlmTableTester::aValueBeingWrittenGoesInTheNextCycle() {
+    this->write(0x10, 1);
+    this->write(0x11, 2);
+    // A writer Run preempted is in 0x10's entry (its sequence odd): Run
+    // cannot wait for it, so it sends the other channel and leaves 0x10
+    const U32 index = this->component.find(0x10);
+    ASSERT_LT(index, TlmTable::ENTRIES);
+    std::atomic<U32>& sequence = this->component.m_entries[index].sequence;
+    const U32 whole = sequence.load();
+    sequence.store(whole + 1);
+    EXPECT_EQ(this->cycle(), (std::map<FwChanIdType, U32>{{0x11, 2}}));
+    // The write ends: its value goes in the next cycle, once
+    sequence.store(whole + 2);
+    EXPECT_EQ(this->cycle(), (std::map<FwChanIdType, U32>{{0x10, 1}}));
+    EXPECT_TRUE(this->cycle().empty());
+}
+
 }  // namespace Kit

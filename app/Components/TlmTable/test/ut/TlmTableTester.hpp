@@ -23,6 +23,7 @@ class TlmTableTester : public TlmTableGTestBase {
     void channelsSharingAHomeEntryKeepTheirOwn();
     void aCycleSpansPacketsAndLosesNone();
     void aChannelPastTheTableAsserts();
+    void aValueBeingWrittenGoesInTheNextCycle();
 
   private:
     void connectPorts();
