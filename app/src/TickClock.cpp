@@ -52,7 +52,7 @@ void start(U32 periodUs) {
     // segment's last handled one is dropped with it.
     TickClock::s_fired = 0;
     k_timer_init(&TickClock::s_timer, TickClock::onExpiry, nullptr);
-    k_timer_start(&TickClock::s_timer, K_USEC(periodUs), K_USEC(periodUs));
+    kit_tick_start(&TickClock::s_timer, periodUs);
 }
 
 void stop() {

@@ -89,13 +89,16 @@ def test_board_fragments_hold_only_zephyrs_own_symbols():
         assert not kit_symbols, f"{conf.relative_to(KIT_ROOT)} sets {kit_symbols}: put them in Kconfig.defconfig"
 
 
-def test_the_floor_and_the_suite_run_on_the_same_boards():
+def test_the_floor_the_tick_and_the_suite_run_on_the_same_boards():
     def platforms(path):
         return yaml.safe_load(path.read_text())["common"]["platform_allow"]
 
     suite = platforms(KIT_ROOT / "tests" / "deployment" / "testcase.yaml")
-    for floor in (KIT_ROOT / "tests" / "floor").glob("*/testcase.yaml"):
-        assert platforms(floor) == suite, f"{floor.relative_to(KIT_ROOT)} runs on other boards than the suite"
+    others = [*(KIT_ROOT / "tests" / "floor").glob("*/testcase.yaml"),
+              *(KIT_ROOT / "tests" / "tick").glob("*/testcase.yaml")]
+    assert others
+    for other in others:
+        assert platforms(other) == suite, f"{other.relative_to(KIT_ROOT)} runs on other boards than the suite"
 
 
 def test_kit_compare_leaves_out_exactly_the_profile_builds():

@@ -75,7 +75,7 @@ static void path_start(struct path_run *run, void (*wake)(void))
 	s_fired = 0U;
 	s_wake = wake;
 	k_timer_init(&s_tick, on_expiry, NULL);
-	k_timer_start(&s_tick, K_USEC(PERIOD_US), K_USEC(PERIOD_US));
+	kit_tick_start(&s_tick, PERIOD_US);
 }
 
 /* Take tick `run->handled` at cycle `now`; false once the run is complete */
