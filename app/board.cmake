@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: Apache-2.0
 # ======================================================================
 # board.cmake: the board folder and the toolchain of a kit application,
-# before find_package(Zephyr). Included by app/kit.cmake (the deployment)
-# and by tests/floor (the kernel floor, a plain Zephyr application), so both
-# run under the same board configuration and compiler. Sets KIT_ROOT,
+# before find_package(Zephyr). Included by app/kit.cmake (the deployment),
+# app/plain_app.cmake (tests/floor/paths, tests/tick: plain Zephyr
+# applications) and tests/floor/latency_measure, so all run under the same
+# board configuration and compiler. Sets KIT_ROOT,
 # KIT_BOARD (the boards/ folder's name) and KIT_BOARD_DIR.
 # ======================================================================
 include_guard(GLOBAL)
