@@ -11,7 +11,10 @@
  * due at): k_timer_start(timer, period, period) does that on a start a few
  * hundred cycles before a boundary, and this test fails with it.
  *
- * One line,
+ * A line for each bad start, its first stamps after the boundary it
+ * followed,
+ *   KIT TICKSTART bad phase=C started=C stamps=C,C,C,C
+ * then one for the sweep,
  *   KIT TICKSTART starts=N bad=N shortest=C longest=C period=C
  * (C in counter cycles: the shortest and longest gap between two of a
  * start's first ticks), then
