@@ -3,15 +3,13 @@
 // \title  rtos/ModelChecks.cpp
 // \brief  Build-time checks that the topology fits the RTOS model
 //
-// The topology's active instances, the priority and stack table
-// (app/Top/Tables.fpp, or a board's override), Zephyr's thread pool and the
-// tick thread's priority are sized in different places; a mismatch would
-// show only at run time (a task that never starts, a stack that does not
-// fit its pool slot, a feeder that overfills the downlink's queue). These
+// The topology's active instances, the priority table (app/Top/Tables.fpp,
+// or a board's override) and the tick thread's priority are set in
+// different places; a mismatch would show only at run time (a feeder that
+// overfills the downlink's queue, a rate group behind the tick). These
 // asserts stop the build instead. (app/Top/TopologyChecks.cpp checks what
 // holds in every model.)
 // ======================================================================
-#include "Top/ActiveStacks.hpp"
 #include "Top/FppConstantsAc.hpp"
 #include "Top/KitTopology.hpp"
 #include "rtos/Os/PriorityMap.hpp"
@@ -41,12 +39,11 @@ static_assert(zephyrPriority(RATE_GROUP_PRIORITIES[0], CONFIG_NUM_PREEMPT_PRIORI
                       CONFIG_MAIN_THREAD_PRIORITY,
               "Tables.fpp (the deployment's, or the board's) and CONFIG_MAIN_THREAD_PRIORITY: only the fastest "
               "rate group may be more urgent than the tick thread");
-// fprime-zephyr takes every task's stack from Zephyr's dynamic thread pool
-static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == ACTIVE_INSTANCE_COUNT,
-              "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model) must give one slot per active instance");
-static_assert(largestActiveStack() <= CONFIG_DYNAMIC_THREAD_STACK_SIZE,
-              "a stack of Tables.fpp (app/Top, or the board's) is larger than a thread pool slot "
-              "(CONFIG_DYNAMIC_THREAD_STACK_SIZE, boards/<board>/Kconfig.defconfig)");
+// Every task's stack comes from the kit's heap, sized from the same table
+// (rtos/ThreadStacks.cpp): a pool slot would take a stack before it does
+static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == 0,
+              "CONFIG_DYNAMIC_THREAD_POOL_SIZE: the rtos model sizes each thread's stack from its table "
+              "(rtos/ThreadStacks.cpp); a pool slot would take one of them at the slot's size");
 
 }  // namespace
 }  // namespace Kit

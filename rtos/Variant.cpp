@@ -11,6 +11,7 @@
 // do per tick.
 // ======================================================================
 #include "app/src/Variant.hpp"
+#include "rtos/ThreadStacks.hpp"
 
 #include <zephyr/kernel.h>
 #include <Fw/Types/Assert.hpp>
@@ -115,7 +116,9 @@ GuardBreach drain() {
 }
 
 void prepareStacks() {
-    // CONFIG_INIT_STACKS paints every thread stack at creation
+    // Each thread's stack at its size in the table (rtos/ThreadStacks.cpp);
+    // CONFIG_INIT_STACKS paints every one at creation
+    ThreadStacks::provide();
 }
 
 U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {

@@ -6,8 +6,8 @@
 // The priority and stack table (app/Top/Tables.fpp, or a board's override
 // in boards/<board>/Tables.fpp) names every instance that can be active; a
 // build where the rate groups or the dispatcher are passive has fewer tasks.
-// Each execution model sizes its tasks from this list (rtos/ModelChecks.cpp
-// checks it against Zephyr's thread pool), so it is written once, here.
+// The rtos model gives each thread its stack from this list
+// (rtos/ThreadStacks.cpp), so it is written once, here.
 // ======================================================================
 #ifndef KIT_ACTIVESTACKS_HPP
 #define KIT_ACTIVESTACKS_HPP
@@ -40,15 +40,6 @@ constexpr FwSizeType ACTIVE_STACKS[] = {
 #endif
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
-
-//! The largest stack of the table's active instances
-constexpr FwSizeType largestActiveStack() {
-    FwSizeType largest = 0;
-    for (FwSizeType i = 0; i < ACTIVE_STACK_ENTRIES; i++) {
-        largest = ACTIVE_STACKS[i] > largest ? ACTIVE_STACKS[i] : largest;
-    }
-    return largest;
-}
 
 }  // namespace Kit
 

@@ -81,6 +81,9 @@ bool playGround(const Context& context) {
         point.loadDropped = load.dropped() - droppedBefore;
         bool broke[RATE_GROUP_COUNT] = {};
         Report::sweepPoint(point, broke);
+        // The stacks' high-water marks so far: the ground link's paths (file
+        // transfers, sequences, fuzzing) reach no other scenario's
+        Report::stacks();
         Session::nextSegment();
         timing.segmentDone();
     }

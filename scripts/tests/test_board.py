@@ -34,7 +34,7 @@ tests:
 
 REFERENCE_FILES = {
     "kit.conf": "# reference kit.conf\nCONFIG_QEMU_ICOUNT=y\nCONFIG_QEMU_ICOUNT_SHIFT=4\n",
-    "Kconfig.defconfig": "if KIT_MODEL_RTOS\nconfig DYNAMIC_THREAD_STACK_SIZE\n\tdefault 2048\nendif\n",
+    "Kconfig.defconfig": "if KIT_MODEL_RTOS\nconfig MAIN_STACK_SIZE\n\tdefault 1536\nendif\n",
     "Tables.fpp": "module Kit {\n  module Priorities {\n    constant rg1kHz = 12\n  }\n"
                   "  module Stacks {\n    constant rg1kHz = 2048\n  }\n}\n",
     "app.overlay": "/ {\n  chosen {\n    zephyr,console = &uart0;\n  };\n};\n",
@@ -261,7 +261,7 @@ def test_the_scaffold_copies_the_reference_with_todo_headers(tmp_path):
     assert "CONFIG_QEMU_ICOUNT_SHIFT" in (folder / "kit.conf").read_text().split("CONFIG_QEMU_ICOUNT=y")[0]
     assert "console" in (folder / "kit.conf").read_text() and "1 kHz" in (folder / "kit.conf").read_text()
     assert "KIT STACK" in (folder / "Kconfig.defconfig").read_text()
-    assert "<= DYNAMIC_THREAD_STACK_SIZE" in (folder / "Tables.fpp").read_text()
+    assert "rtos/ThreadStacks.cpp" in (folder / "Tables.fpp").read_text()
     output = "\n".join(said)
     assert "created: boards/mps2_an385/kit.conf" in output
     assert "memory: rtos: flash 108.1 of 2048 KiB" in output and "RAM 47.8 of 4096 KiB" in output

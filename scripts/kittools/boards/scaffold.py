@@ -31,7 +31,7 @@ TODOS: dict[str, tuple[str, ...]] = {
     ),
     "Kconfig.defconfig": (
         "Re-measure the stacks on this board from the 'KIT STACK' lines of a run of every",
-        "scenario, with headroom: MAIN_STACK_SIZE per model, DYNAMIC_THREAD_STACK_SIZE (rtos).",
+        "scenario, with headroom: MAIN_STACK_SIZE per model (the rtos threads' own are in Tables.fpp).",
         "Stack protection (rtos): HW_STACK_PROTECTION where the part has an MPU, else STACK_SENTINEL.",
         "The C heap's arena per model (COMMON_LIBC_MALLOC_ARENA_SIZE) is what the reference board's runs used:",
         "the same code uses the same heap; re-measure from 'KIT HEAP arena_left' if this board's build differs.",
@@ -45,7 +45,7 @@ TODOS: dict[str, tuple[str, ...]] = {
     "Tables.fpp": (
         "Priorities and stacks are the reference board's: re-measure the stacks from the",
         "'KIT STACK' lines of this board's runs and check the priorities (docs/porting.md,",
-        "steps 6-7). Every stack must be <= DYNAMIC_THREAD_STACK_SIZE (Kconfig.defconfig; the build checks).",
+        "steps 6-7). Each rtos thread gets its stack at this size (rtos/ThreadStacks.cpp).",
     ),
     "app.overlay": (
         "Devicetree copied from the reference board: choose the ground link's UART (kit,link-uart:",

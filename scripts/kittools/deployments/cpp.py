@@ -72,8 +72,9 @@ def active_stacks_hpp(result: Plan) -> str:
     return f"""// ======================================================================
 // \\title  ActiveStacks.hpp
 // \\brief  The stack of every active instance this build has, in
-//         ACTIVE_INSTANCES' order (each model sizes its tasks from it:
-//         <model>/ModelChecks.cpp). Written by kit new-deployment.
+//         ACTIVE_INSTANCES' order (the rtos model gives each thread its
+//         stack from it: rtos/ThreadStacks.cpp). Written by kit
+//         new-deployment.
 // ======================================================================
 #ifndef {guard}
 #define {guard}
@@ -90,15 +91,6 @@ constexpr FwSizeType ACTIVE_STACKS[] = {{
 }};
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
 static_assert(ACTIVE_STACK_ENTRIES == ACTIVE_INSTANCE_COUNT, "ACTIVE_STACKS and ACTIVE_INSTANCES disagree");
-
-//! The largest stack of the table's active instances
-constexpr FwSizeType largestActiveStack() {{
-    FwSizeType largest = 0;
-    for (FwSizeType stack : ACTIVE_STACKS) {{
-        largest = stack > largest ? stack : largest;
-    }}
-    return largest;
-}}
 
 }}  // namespace Kit
 

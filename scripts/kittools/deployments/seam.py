@@ -13,8 +13,9 @@ from pathlib import Path
 from kittools.deployments import fpp
 from kittools.deployments.template import Deployment
 
-#: The kit's stack for each task (a thread pool slot on the kit's boards:
-#: CONFIG_DYNAMIC_THREAD_STACK_SIZE); the template's 64 KiB are a host's
+#: The kit's stack for each task, until the deployment's runs measure its
+#: own (rtos: each thread's stack at its size, rtos/ThreadStacks.cpp); the
+#: template's 64 KiB are a host's
 KIT_STACK = 2048
 #: The kit's own tasks' entries (app/Subtopologies/: the load, the downlink's
 #: queue), as tests/team/Thermal has them
@@ -163,7 +164,7 @@ def config_overrides(result: Plan, fprime_subtopologies: Path) -> dict[str, str]
             events = (f"# The event service's queue holds {EVENTS_QUEUE}: health's pings must find room.\n"
                       if queues else "")
             header = (f"# F´'s {path.name} (Svc/Subtopologies/{name}) with the kit's stacks and priorities: a\n"
-                      f"# {KIT_STACK} B thread pool slot each, and F´ priorities on the kit's scale\n"
+                      f"# {KIT_STACK} B stack each, and F´ priorities on the kit's scale\n"
                       f"{events}# (docs/your-deployment.md). Written by kit new-deployment; yours to change.\n")
             files[path.name] = header + text
     return files
@@ -297,7 +298,7 @@ def tables(result: Plan) -> str:
                                    "tick is 12; only the fastest group is above it)", priorities)
             + "\n"
             + module("Stacks", f"Thread stacks (rtos; baremetal runs every task on the main stack): one "
-                               f"{KIT_STACK} B pool slot each", stacks)
+                               f"{KIT_STACK} B each until the runs' KIT STACK lines measure them", stacks)
             + "\n"
             + module("Queues", "Queue depths: a rate group's holds one pending cycle (a second is a slip the "
                                "run counts), the template's for its other tasks, the kit's for its own", queues)
@@ -332,7 +333,7 @@ def deployment_conf(result: Plan, tasks: int, heap: int, text_loggers: bool, fix
         "CONFIG_KIT_SERVICE_FILE_UPLINK=n",
         "CONFIG_KIT_SERVICE_SEQUENCER=n",
         "# Its tasks with its rate groups active: the models' task tables and the",
-        "# RTOS's thread pool hold this many",
+        "# reports' execution contexts hold this many",
         "CONFIG_KIT_DEPLOYMENT_OWN_TASKS=y",
         f"CONFIG_KIT_DEPLOYMENT_TASKS={tasks}",
         "# First shares of F´'s fixed tables: the build fails naming both counts",

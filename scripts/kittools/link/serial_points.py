@@ -161,14 +161,30 @@ class Outcome:
     #: the newest value of every channel at its end
     events: dict[str, int] = field(default_factory=dict)
     telemetry: dict[str, Any] = field(default_factory=dict)
+    #: The STACK lines the deployment printed after the sweep's last
+    #: segment: every stack's high-water mark over the whole sweep, the
+    #: ground link's paths included (the suite's scenarios reach none of them)
+    stacks: list[str] = field(default_factory=list)
 
     def to_json(self) -> dict[str, Any]:
         return {"lines": self.lines + [t.record() for t in self.traffic],
                 "traffic": [asdict(t) for t in self.traffic], "events": self.events,
-                "telemetry": self.telemetry}
+                "telemetry": self.telemetry, "stacks": self.stacks}
 
     def sweep(self) -> sweep.Sweep | None:
         return sweep.of_records([{"kind": r.kind, **r.fields} for r in _records(self.lines)])
+
+
+def last_stacks(console: list[str]) -> list[str]:
+    """The last run of consecutive STACK lines of a console (none: [])."""
+    found: list[str] = []
+    run: list[str] = []
+    for line in console:
+        if line.startswith("KIT STACK "):
+            run.append(line)
+        elif run:
+            found, run = run, []
+    return run or found
 
 
 def _records(lines: list[str]) -> list[console.Record]:

@@ -79,6 +79,7 @@ from kittools.link.serial_points import (
     downlink_levels,
     file_request,
     full_line_commands,
+    last_stacks,
     noise_per_second,
 )
 from kittools.link.services import ping_enable, routine_events, string_argument
@@ -268,6 +269,7 @@ def run(build: Path, repeats: int = REPEATS, axes: Collection[str] | None = None
                 sweeping.slice_hz = sweeping.driver.slice_hz()
             for play in chosen:
                 play(sweeping)
+            sweeping.outcome.stacks = last_stacks(qemu.lines)
             sweeping.outcome.events = dict(sorted(link.events.items()))
             sweeping.outcome.telemetry = dict(sorted(link.telemetry.items()))
         except KitError as error:

@@ -228,7 +228,15 @@ def _tables(info: DebugInfo, dictionary: dict[str, Any], config: dict[str, str],
         found.append(Advice("TaskRunner task table", "TASK_CAPACITY (fprime-baremetal "
                             "Os/TaskRunner/TaskRunner.hpp, an upstream constant)", runner.count, active,
                             runner.element_bytes, f"{active} active instances"))
-    if config.get("CONFIG_DYNAMIC_THREAD_POOL_SIZE"):
+    prm_db = info.member("Svc::PrmDbImpl", "m_dbStore1")
+    if prm_db is not None:
+        parameters = len(dictionary.get("parameters", []))
+        found.append(Advice("parameter database (PrmDb, two tables)", "CONFIG_KIT_DEPLOYMENT_PARAMETERS "
+                            "(app/Kconfig)", prm_db.count, parameters, 2 * prm_db.element_bytes,
+                            f"{parameters} parameters in the dictionary"))
+    # The kit's rtos model sizes each stack from its table (rtos/ThreadStacks.cpp);
+    # a build on Zephyr's thread pool gives each thread one slot
+    if int(config.get("CONFIG_DYNAMIC_THREAD_POOL_SIZE", "0")) > 0:
         thread = info.cls("k_thread")
         slot = int(config.get("CONFIG_DYNAMIC_THREAD_STACK_SIZE", "0")) + info.size(thread)
         found.append(Advice("thread pool", "CONFIG_DYNAMIC_THREAD_POOL_SIZE (rtos/Kconfig.model)",

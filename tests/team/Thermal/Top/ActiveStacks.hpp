@@ -2,7 +2,8 @@
 // ======================================================================
 // \title  ActiveStacks.hpp
 // \brief  The stack table's entry of every active instance this build has
-//         (each model sizes its tasks from it: <model>/ModelChecks.cpp)
+//         (the rtos model gives each thread its stack from it:
+//         rtos/ThreadStacks.cpp)
 // ======================================================================
 #ifndef THERMAL_ACTIVESTACKS_HPP
 #define THERMAL_ACTIVESTACKS_HPP
@@ -22,15 +23,6 @@ constexpr FwSizeType ACTIVE_STACKS[] = {
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
 static_assert(ACTIVE_STACK_ENTRIES == ACTIVE_INSTANCE_COUNT, "ACTIVE_STACKS and ACTIVE_INSTANCES disagree");
-
-//! The largest stack of the table's active instances
-constexpr FwSizeType largestActiveStack() {
-    FwSizeType largest = 0;
-    for (FwSizeType stack : ACTIVE_STACKS) {
-        largest = stack > largest ? stack : largest;
-    }
-    return largest;
-}
 
 }  // namespace Kit
 

@@ -20,8 +20,8 @@ module Kit {
     constant load = 1
   }
 
-  @ Thread stacks (rtos; baremetal runs every task on the main stack): one
-  @ pool slot each (CONFIG_DYNAMIC_THREAD_STACK_SIZE)
+  @ Thread stacks (rtos; baremetal runs every task on the main stack): each
+  @ thread's own (rtos/ThreadStacks.cpp)
   module Stacks {
     constant rg50Hz = 2048
     constant rg10Hz = 2048
