@@ -65,8 +65,9 @@ module Kit {
   # assert, and the threads whose deepest paths only the integration suite
   # plays, which prints no stacks: the parameter database (with 1280 B, its
   # PRM_LOAD_FILE, a file object and a working buffer on the stack, hung
-  # the deployment on both boards with no fault reported: a frame that
-  # large steps over a 32 B guard and a sentinel word) and the file uplink.
+  # the deployment on both boards with no fault reported, most likely a
+  # frame that large stepping over a 32 B guard and a sentinel word) and
+  # the file uplink.
   module Stacks {
     constant rg1kHz = 1344
     constant rg100Hz = 1920
