@@ -5,9 +5,10 @@
 //
 // fprime-zephyr starts each active component with k_thread_stack_alloc(its
 // stack size from the table). Zephyr's thread pool would give every thread
-// one slot size, the largest stack's (2048 B): the kit's stacks differ by
-// up to 4x (app/Top/Tables.fpp), and on a 64 KiB part the difference is a
-// whole F´ service. So the stacks come from Zephyr's other allocator
+// one slot size, the largest stack's (2048 B): the kit's stacks run from
+// 1152 B to 2048 B (app/Top/Tables.fpp), and on qemu_cortex_m3 the uniform
+// slot cost 3448 B of its 64 KiB (rtos static RAM 64252 B, 60804 B without
+// the pool). So the stacks come from Zephyr's other allocator
 // (CONFIG_DYNAMIC_THREAD_ALLOC, rtos/Kconfig.model): the resource pool of
 // the thread that starts them, here a heap of this file's own, sized at
 // build time from the deployment's stack table (Top/ActiveStacks.hpp) and
