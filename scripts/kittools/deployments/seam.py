@@ -43,7 +43,7 @@ FIRST_COMMANDS = 128
 #: The main thread's stack, a first size (the kit's boards' largest default is 3072)
 MAIN_STACK = 8192
 #: The kit's C heap without its optional services (app/Kconfig's COMMON_LIBC_MALLOC_ARENA_SIZE)
-KIT_HEAP = 13312
+KIT_HEAP = 10816
 #: F´'s heap per task beyond that: its queue and its share of F´'s
 #: allocations. fprime-util's template, adapted, took 34,245 B of F´'s
 #: allocations for its 16 tasks in rtos on mps2/an385 (KIT HEAP
