@@ -51,23 +51,25 @@ module Kit {
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
   # stack and ignores them), each its own size (rtos/ThreadStacks.cpp). The
   # rule: the thread's high-water mark over every run of the suite on both
-  # boards ("KIT STACK" lines: the nominal, load and faults scenarios, and
-  # the serial-load sweep through the ground link, which goes deepest: the
-  # 100 Hz group deframing the uplink at its line rate, 1444 B, the 10 Hz
-  # group 1460 B, where the scenarios reach 532 B and 1012 B), plus 472 B
-  # for an F´ assert raised on it, rounded up to 64 B. The 472 B: an assert
-  # in a command handler took the dispatcher's stack from 1292 B to 1764 B
+  # boards ("KIT STACK" lines: the nominal, load and faults scenarios; the
+  # serial-load sweep through the ground link, whose uplink at its line
+  # rate takes the 100 Hz group to 1444 B and the 10 Hz group to 1460 B,
+  # where the scenarios reach 532 B and 1012 B; the integration suite, whose
+  # parameter files, file transfers and sequences reach no other run's
+  # paths: the parameter database 1188 B, the file uplink 840 B, the
+  # sequencer 1536 B, where the sweep's sequences took it to 1304 B,
+  # kit test's "stacks after the suite"), plus 472 B for an F´ assert
+  # raised on it, rounded up to 64 B. The 472 B: an assert in a command
+  # handler took the dispatcher's stack from 1292 B to 1764 B
   # (qemu_cortex_m3, the assert scenario). It is the assert's report that
   # needs it (the run halts either way): mps2/an385's MPU guard once caught
   # an assert overflowing the dispatcher's 1792 B stack, which
   # qemu_cortex_m3's stack sentinel (one word at the bottom) had missed.
-  # Kept at 2048 B: the dispatcher, where the assert scenario raises its
-  # assert, and the threads whose deepest paths only the integration suite
-  # plays, which prints no stacks: the parameter database (with 1280 B, its
-  # PRM_LOAD_FILE, a file object and a working buffer on the stack, hung
-  # the deployment on both boards with no fault reported, most likely a
-  # frame that large stepping over a 32 B guard and a sentinel word) and
-  # the file uplink.
+  # The dispatcher keeps 2048 B: the assert scenario raises its assert
+  # there. With 1280 B, the parameter database's PRM_LOAD_FILE (a file
+  # object and a working buffer on the stack) hung the deployment on both
+  # boards with no fault reported: 1188 B deep, it had stepped over the
+  # 32 B guard and the sentinel word.
   module Stacks {
     constant rg1kHz = 1344
     constant rg100Hz = 1920
@@ -77,10 +79,10 @@ module Kit {
     constant tlmSend = 1152
     constant comQueue = 1600
     constant load = 1344
-    constant prmDb = 2048
+    constant prmDb = 1664
     constant fileDownlink = 1664
-    constant fileUplink = 2048
-    constant cmdSeq = 1792
+    constant fileUplink = 1344
+    constant cmdSeq = 2048
   }
 
 }

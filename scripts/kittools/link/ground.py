@@ -221,6 +221,15 @@ class GroundStation:
     def console(self) -> str:
         return self.qemu.text() if self.qemu else ""
 
+    def lines(self, read_s: float = 0.0) -> list[str]:
+        """The console's lines so far, after reading what it prints in
+        `read_s` (nothing reads it while clients talk to the deployment)."""
+        if self.qemu is None:
+            return []
+        if read_s > 0:
+            self.qemu.read_until(lambda _line: False, read_s)
+        return list(self.qemu.lines)
+
     def stop(self) -> None:
         if self._gds is not None and self._gds.poll() is None:
             # fprime-gds stops its applications on SIGINT, as on Ctrl-C

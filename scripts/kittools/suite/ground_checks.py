@@ -20,11 +20,12 @@ from kittools.build import runner
 from kittools.link import file_fuzz, flood, fuzz, ground, serial_sweep
 from kittools.link.dictionary import Dictionary
 from kittools.link.sequence_load import RUN_COMMAND
-from kittools.link.serial_points import SEQUENCE
+from kittools.link.serial_points import SEQUENCE, SegmentClock
 from kittools.log import LOG, say
 from kittools.suite import platforms, results
 from kittools.suite.counts import Tally, junit_failures, junit_tally, run_logged
 from kittools.suite.platforms import TWISTER_OUT
+from kittools.suite.stack_marks import STACKS_FILE, stack_summary, stacks_after_the_suite
 from kittools.workspace import KIT_ROOT, KitError, check_board
 
 INTEGRATION = KIT_ROOT / "tests" / "integration"
@@ -143,12 +144,15 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
     xml = logs / "pytest.xml"
     started = time.monotonic()
     with ground.GroundStation(build, logs) as station:
+        # One hyperperiod's segment after the last test: its end prints the stacks (tests/integration/conftest.py)
+        hyperperiod = SegmentClock.of_console(station.lines()).hyperperiod_ticks
         run_logged([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(INTEGRATION),
               *(["-k", select] if select else []), *station.client_arguments(), "--logs", str(logs / "api"),
               # the test client's own file downlinks (the station's are in its logs' files/)
               "--file-storage-directory", str(logs / "api-files"),
-              f"--junitxml={xml}"],
+              f"--kit-stacks-ticks={hyperperiod}", f"--junitxml={xml}"],
              logs / "pytest.log")
+        stacks = stacks_after_the_suite(station)
         console_text = station.console()
     (logs / "console.log").write_text(console_text + "\n")
     if not xml.is_file():
@@ -156,6 +160,11 @@ def station_checks(platform: str, build: Path, log_dir: Path, select: str | None
     tally = junit_tally(xml)
     say(f"  {name}: {tally.passed} passed, {tally.failed} failed "
         f"({time.monotonic() - started:.0f} s; logs {logs})")
+    if stacks:
+        (logs / STACKS_FILE).write_text("\n".join(stacks) + "\n")
+        say(f"  {name}: stacks after the suite (used of size, B): {stack_summary(stacks)}")
+    else:
+        say(f"  {name}: the deployment printed no stacks after the suite (console.log)")
     if tally.failed:
         say(f"  {name}: FAIL: {'; '.join(junit_failures(xml))} (pytest.log: {logs / 'pytest.log'})")
     return tally
