@@ -19,6 +19,16 @@ KCONFIG = (
     "CONFIG_PICOLIBC", "CONFIG_SIZE_OPTIMIZATIONS", "CONFIG_SPEED_OPTIMIZATIONS", "CONFIG_LTO", "CONFIG_COMPILER_OPT",
 )
 
+#: F´'s optional services (app/Kconfig), each with what the report calls
+#: it: a board's profile leaves out, per model, what its RAM cannot hold
+SERVICES = (
+    ("CONFIG_KIT_SERVICE_CDH", "health and version (CdhCore)"),
+    ("CONFIG_KIT_SERVICE_PARAMS", "parameter database (FileHandling)"),
+    ("CONFIG_KIT_SERVICE_FILES", "file downlink (FileHandling)"),
+    ("CONFIG_KIT_SERVICE_FILE_UPLINK", "file uplink (FileHandling)"),
+    ("CONFIG_KIT_SERVICE_SEQUENCER", "command sequencer"),
+)
+
 
 def kconfig(folder: BuildFolder) -> dict[str, str]:
     """The Kconfig values of KCONFIG a build has (FileNotFoundError without a .config)."""
@@ -42,7 +52,13 @@ def deployment(folder: BuildFolder) -> str:
     return label(Path(path), Path(location) if location else None) if path else "unknown"
 
 
+def services(folder: BuildFolder) -> dict[str, bool]:
+    """Which of F´'s optional services (SERVICES) the build carries."""
+    config = folder.kconfig(missing_ok=True)
+    return {key: config.get(key) == "y" for key, _ in SERVICES}
+
+
 def read(build_dir: Path) -> dict[str, object]:
     folder = BuildFolder(build_dir)
     return {"toolchain": toolchain(folder), "deployment": deployment(folder), "kconfig": kconfig(folder),
-            "fprime": folder.fprime_settings()}
+            "services": services(folder), "fprime": folder.fprime_settings()}

@@ -6,10 +6,11 @@ from __future__ import annotations
 from typing import Any
 
 from kittools import model, sweep
+from kittools.build.conditions import SERVICES
 from kittools.model import Results
 from kittools.report.analysis import break_text, sweeps
 from kittools.report.document import Table, Text, fmt
-from kittools.sizes import symbols
+from kittools.sizes import by_layer, symbols
 from kittools.suite.budget import Budget, Verdict
 
 #: Symbols shown per variant and kind in the report's size diff (largest changes)
@@ -45,6 +46,52 @@ def modules_table(data: Results) -> Table | None:
     rows.append(["total"] + [sum(rom[v].values()) for v in names] + [sum(ram[v].values()) for v in names])
     return Table("ROM and RAM by module (bytes; Zephyr rom_report / ram_report, sorted into layers)",
                  ["module"] + [f"ROM {v}" for v in names] + [f"RAM {v}" for v in names], rows)
+
+
+#: The layer of the ROM and RAM by module each of F´'s optional services is in
+_SERVICE_LAYERS = {
+    "CONFIG_KIT_SERVICE_CDH": by_layer.HEALTH_VERSION,
+    "CONFIG_KIT_SERVICE_PARAMS": by_layer.FILE_HANDLING,
+    "CONFIG_KIT_SERVICE_FILES": by_layer.FILE_HANDLING,
+    "CONFIG_KIT_SERVICE_FILE_UPLINK": by_layer.FILE_HANDLING,
+    "CONFIG_KIT_SERVICE_SEQUENCER": by_layer.SEQUENCER,
+}
+
+
+def services_sections(data: Results) -> list[Table | Text]:
+    """Which of F´'s optional services each model carries, and for a model
+    its board's profile leaves some out, why, in the run's numbers: its
+    static RAM against the board's, and the RAM their layers take in a model
+    that carries them. None for results recorded before the services were."""
+    names = data.names()
+    carried: dict[str, dict[str, bool]] = {v: data.variants[v].build.get("services") or {} for v in names}
+    if not all(carried.values()):
+        return []
+    rows: list[list[Any]] = [[label] + ["yes" if carried[v].get(key) else "left out" for v in names]
+                             for key, label in SERVICES]
+    table = Table("F´'s services per model (a board's profile, boards/<board>/Kconfig.defconfig, leaves out what "
+                  "its RAM cannot hold beside a model)", ["service"] + names, rows)
+    why: list[str] = []
+    for v in names:
+        missing = [key for key, _ in SERVICES if not carried[v].get(key)]
+        footprint = data.variants[v].footprint
+        if not missing or not footprint.get("ram_size"):
+            continue
+        labels = ", ".join(label for key, label in SERVICES if key in missing)
+        text = (f"{v} leaves out the {labels}: its static RAM is {footprint['ram']:,} B of {footprint['ram_size']:,} "
+                f"({footprint['ram_size'] - footprint['ram']:,} B free).")
+        # The model that carries the most of them, its layers' RAM against this one's
+        others = [w for w in names if w != v and carried[w].get(missing[0])]
+        if others:
+            other = max(others, key=lambda w: sum(carried[w].get(key, False) for key in missing))
+            layers = list(dict.fromkeys(_SERVICE_LAYERS[key] for key in missing))
+            ram = {w: data.variants[w].modules.get("ram", {}) for w in (v, other)}
+            more = [f"{layer} {ram[other].get(layer, 0) - ram[v].get(layer, 0):,} B" for layer in layers]
+            text += (f" In {other}, which carries them, their layers take this much more RAM ({'; '.join(more)}), "
+                     f"before what {v} adds for each: its thread's stack (app/Top/Tables.fpp) and its queue in "
+                     f"the heap.")
+        why.append(text)
+    return [table, Text("Why a model leaves services out", why)] if why else [table]
 
 
 def _cell(value: Any, key: str) -> Any:

@@ -58,6 +58,7 @@ def build_sections(data: Results, baseline: Results | None, limits: Budget,
     mods = tables.modules_table(data)
     if mods is not None:
         sections += [mods, plots.modules_chart(mods, names)]
+    sections += tables.services_sections(data)
     sections += tables.sizing_tables(data)
     sections += tables.record_tables(data)
     rate_groups = sorted({r["name"] for v in names for r in data.variants[v].of_kind("RG")})
