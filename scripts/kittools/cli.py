@@ -75,8 +75,9 @@ def parser() -> argparse.ArgumentParser:
                    help=f"the short run: every model (or --model's) on {REFERENCE_BOARD}, nominal, faults and "
                         "load, a NO_OP through fprime-gds per model, host and tooling tests; no budget")
     t.add_argument("--full", action="store_true",
-                   help="also what CI's run leaves out: the real boards' builds of each baremetal policy "
-                        "(tests/boards, tag 'full') and the porting check's rtos build of its real board")
+                   help="also what CI's run leaves out: the porting check (kit new-board's QEMU and real "
+                        "boards), the new-deployment check (fprime-util's template through kit new-deployment), "
+                        "the real boards' builds of each baremetal policy (tests/boards, tag 'full')")
     t.add_argument("--subset", metavar="K/N",
                    help="this machine's share K of a full run split across N (twister's --subset); join the "
                         "shards' --output folders with kit report --merge")

@@ -167,17 +167,21 @@ def _lanes(monkeypatch, argv: list[str]) -> tuple[list[str], list[str]]:
 
 
 def test_the_porting_and_new_deployment_steps_end_the_host_lane_of_a_full_run(monkeypatch, tmp_path):
-    """Beside the suite's twister, done before the ground link starts."""
+    """--full's: beside the suite's twister, done before the ground link
+    starts; CI's run (no --full) leaves both out."""
     out = ["--output", str(tmp_path)]
-    qemu, host = _lanes(monkeypatch, [*out])
+    qemu, host = _lanes(monkeypatch, [*out, "--full"])
     assert host[-2].startswith("porting: a new QEMU board and a console-only real board scaffolded into a scratch")
     assert host[-1].startswith("new deployment: fprime-util new --deployment, kit new-deployment")
     assert not any(name.startswith(("porting:", "new deployment:")) for name in qemu)
+    qemu, host = _lanes(monkeypatch, out)
+    assert not any(name.startswith(("porting:", "new deployment:")) for name in qemu + host)
+    assert any(name.startswith("host unit tests") for name in host)
     for argv in (["--skip-porting"], ["--skip-twister"], ["--board", "qemu_cortex_m3"]):
-        qemu, host = _lanes(monkeypatch, [*out, *argv])
+        qemu, host = _lanes(monkeypatch, [*out, "--full", *argv])
         assert not any(name.startswith("porting:") for name in qemu + host), argv
     for argv in (["--skip-twister"], ["--board", "qemu_cortex_m3"]):
-        qemu, host = _lanes(monkeypatch, [*out, *argv])
+        qemu, host = _lanes(monkeypatch, [*out, "--full", *argv])
         assert not any(name.startswith("new deployment:") for name in qemu + host), argv
 
 

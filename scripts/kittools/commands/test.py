@@ -248,19 +248,21 @@ class FullRun:
             steps.add_host(f"device testing: twister's device harness, QEMU standing in for a flashed "
                            f"{device_runs.STAND_IN_BOARD} ({device_runs.STAND_IN_MODEL})",
                            functools.partial(device_runs.run_qemu_device, self.log_dir))
-        # The porting path: its own twister and west builds, in the lane beside
-        # the suite's twister (which leaves a core idle at its start and between
-        # its builds' runs), done before the ground link's checks start (their
-        # time-outs are the host's). A run for chosen boards (--board) is about
-        # those: it leaves it out.
-        if not args.skip_twister and not args.skip_porting and not args.board and first:
+        # The porting path and the new-deployment path: the full run's (--full),
+        # each several builds of its own (about 10 minutes each on CI's two
+        # cores), which kept CI's run near 50 minutes; CI's run keeps the paths
+        # every change goes through. Their own twister and west builds, in the
+        # lane beside the suite's twister, done before the ground link's
+        # checks start (their time-outs are the host's). A run for chosen
+        # boards (--board) is about those: it leaves them out.
+        if not args.skip_twister and not args.skip_porting and not args.board and args.full and first:
             steps.add_host(f"porting: a new QEMU board and a console-only real board scaffolded into a scratch "
                            f"copy ({', '.join(porting.PORTING_MODELS)})",
                            functools.partial(porting.run_porting_check, self.log_dir, args.full))
         # A deployment as F´'s tools make one, through kit new-deployment: in
         # the same lane, after the porting check (both end before the ground
         # link's checks start, which wait for this lane)
-        if not args.skip_twister and not args.board and last:
+        if not args.skip_twister and not args.board and args.full and last:
             steps.add_host(f"new deployment: fprime-util new --deployment, kit new-deployment, kit compare on "
                            f"{template_deployment.BOARD} ({', '.join(template_deployment.compared_models(args.full))}"
                            f"), the fit on {template_deployment.SMALL_BOARD}",
