@@ -9,10 +9,10 @@ reach paths no scenario does, and these marks size the rtos stack table
 
 from __future__ import annotations
 
-import re
 import time
 from typing import Protocol
 
+from kittools import console
 from kittools.link.serial_points import last_stacks
 
 
@@ -28,7 +28,6 @@ STACKS_FILE = "stacks.txt"
 #: How long the deployment may take to answer the segment's request, run
 #: it (a hyperperiod's wait, the hyperperiod) and print its stacks
 STACKS_WAIT_S = 20
-STACK_LINE = re.compile(r"KIT STACK name=(\S+) size=(\d+) used=(\d+)")
 
 
 def stacks_after_the_suite(station: Console) -> list[str]:
@@ -49,5 +48,5 @@ def stacks_after_the_suite(station: Console) -> list[str]:
 
 def stack_summary(stacks: list[str]) -> str:
     """name used/size, for each STACK line."""
-    marks = [m.groups() for line in stacks if (m := STACK_LINE.search(line))]
-    return ", ".join(f"{name} {used}/{size}" for name, size, used in marks)
+    marks = [record.fields for line in stacks if (record := console.parse_line(line)) is not None]
+    return ", ".join(f"{mark.get('name')} {mark.get('used')}/{mark.get('size')}" for mark in marks)
