@@ -11,6 +11,7 @@
 // do per tick.
 // ======================================================================
 #include "app/src/Variant.hpp"
+#include "rtos/AssertReport.hpp"
 #include "rtos/ThreadStacks.hpp"
 
 #include <zephyr/kernel.h>
@@ -119,6 +120,9 @@ void prepareStacks() {
     // Each thread's stack at its size in the table (rtos/ThreadStacks.cpp);
     // CONFIG_INIT_STACKS paints every one at creation
     ThreadStacks::provide();
+    // An assert's report on a stack of its own, so that no thread's holds it
+    // (rtos/AssertReport.cpp)
+    AssertReport::start();
 }
 
 U32 stacks(StackUse (&out)[MAX_CONTEXTS]) {

@@ -7,6 +7,7 @@ add_fprime_subdirectory("${CMAKE_CURRENT_LIST_DIR}/Os")
 set(KIT_MODEL_SOURCES
     "${CMAKE_CURRENT_LIST_DIR}/Variant.cpp"
     "${CMAKE_CURRENT_LIST_DIR}/ThreadStacks.cpp"  # every thread's stack at the table's size
+    "${CMAKE_CURRENT_LIST_DIR}/AssertReport.cpp"  # an assert's report on a stack of its own
     "${CMAKE_CURRENT_LIST_DIR}/ModelChecks.cpp"  # build-time checks that the topology fits this model
 )
 set(KIT_MODEL_IMPLEMENTATIONS

@@ -58,27 +58,32 @@ module Kit {
   # parameter files, file transfers and sequences reach no other run's
   # paths: the parameter database 1188 B, the file uplink 840 B, the
   # sequencer 1536 B, where the sweep's sequences took it to 1304 B,
-  # kit test's "stacks after the suite"), plus 472 B for an F´ assert
-  # raised on it, rounded up to 64 B. The 472 B: an assert in a command
-  # handler took the dispatcher's stack from 1292 B to 1764 B
-  # (qemu_cortex_m3, the assert scenario). It is the assert's report that
-  # needs it (the run halts either way): mps2/an385's MPU guard once caught
-  # an assert overflowing the dispatcher's 1792 B stack, which
-  # qemu_cortex_m3's stack sentinel (one word at the bottom) had missed.
-  # The dispatcher keeps 2048 B: the assert scenario raises its assert
-  # there. With 1280 B, the parameter database's PRM_LOAD_FILE (a file
-  # object and a working buffer on the stack) hung the deployment on both
-  # boards with no fault reported: 1188 B deep, it had stepped over the
-  # 32 B guard and the sentinel word.
+  # kit test's "stacks after the suite"; the dispatcher 1472 B), plus
+  # 472 B for an F´ assert raised at that depth, rounded up to 64 B.
+  # The rtos model reports an assert on a thread of its own
+  # (rtos/AssertReport.cpp): the asserting thread only hands it over, 436 B
+  # at most below the assert (F´'s Fw::SwAssert keeps a 164 B message
+  # buffer in its frame; then the hand-off and its context switch): an
+  # assert in a command handler 736 B deep took the dispatcher to 1172 B
+  # (qemu_cortex_m3, the assert scenario). The report itself (its message,
+  # its FATAL event, the fatal handler) is 1100 B deep, which no thread's
+  # 472 B could hold: on the asserting thread it took 1028 B beyond the
+  # assert (the dispatcher 1764 B at the halt), so an assert raised within
+  # 556 B of a thread's high-water mark overflowed it (mps2/an385's MPU guard once caught one on the dispatcher's
+  # 1792 B stack, which qemu_cortex_m3's sentinel word had missed). With
+  # 1280 B, the parameter database's PRM_LOAD_FILE (a file object and a
+  # working buffer on the stack) hung the deployment on both boards with
+  # no fault reported: 1188 B deep, it had stepped over the 32 B guard and
+  # the sentinel word.
   module Stacks {
     constant rg1kHz = 1344
     constant rg100Hz = 1920
     constant rg10Hz = 1984
-    constant cmdDisp = 2048
+    constant cmdDisp = 1984
     constant events = 1216
     constant tlmSend = 1152
-    constant comQueue = 1600
-    constant load = 1344
+    constant comQueue = 1536
+    constant load = 1024
     constant prmDb = 1664
     constant fileDownlink = 1664
     constant fileUplink = 1344

@@ -20,8 +20,8 @@ namespace Kit {
 namespace Variant {
 
 //! The most execution contexts (threads, cooperative tasks, idle) a model
-//! reports: the topology's active instances plus the kernel's own (4: the
-//! main thread, idle, and room for the kernel's work queues); the kit's
+//! reports: the topology's active instances plus the others (4: the main
+//! thread, idle, rtos's assert report, room for a kernel work queue); the kit's
 //! services have at most 12, a deployment that gives its count
 //! (CONFIG_KIT_DEPLOYMENT_TASKS) its own
 #if defined(CONFIG_KIT_DEPLOYMENT_OWN_TASKS)
@@ -106,7 +106,9 @@ GuardBreach drain();
 //! fault that an overflow caused before the guard was checked is named one
 GuardBreach guardState();
 
-//! Before setup: prepare stack measurement (baremetal paints the main stack)
+//! Before setup, after the deployment's objects are built: prepare the
+//! stacks and their measurement (baremetal paints the main stack; rtos
+//! provides the thread stacks and the thread that reports an assert)
 void prepareStacks();
 
 //! Every stack with its size and high-water mark; returns how many

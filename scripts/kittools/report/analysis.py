@@ -364,8 +364,9 @@ TASK_REASONS = {
 }
 #: ... and of every rate group, whatever the deployment names it (its RG records)
 RATE_GROUP_REASON = "a passive form: F´'s PassiveRateGroup (baremetal_passive)"
-#: CPU records that are not component tasks
-NOT_COMPONENTS = ("idle", "main")
+#: CPU records that are not component tasks (rtos's "assert" reports an F´
+#: assert on a stack of its own: rtos/AssertReport.cpp)
+NOT_COMPONENTS = ("idle", "main", "assert")
 
 
 def tasks_table(data: Results) -> Table | None:

@@ -176,6 +176,14 @@ ASSERT = [
     r"KIT FATAL event=0x[0-9a-f]+",
     r"KIT HALT reason=kernel_panic code=4 context=\w+ expected=yes",
 ]
+# rtos reports an assert on a thread of its own (rtos/AssertReport.cpp): the
+# halt is that thread's, with its stack's line (the report's depth)
+RTOS_ASSERT = [
+    ASSERT_REPORT,
+    r"KIT FATAL event=0x[0-9a-f]+",
+    r"KIT STACK name=assert size=[0-9]+ used=[0-9]+",
+    r"KIT HALT reason=kernel_panic code=4 context=assert expected=yes",
+]
 
 # Health's side of the sweep, where the build has health: the longest a ping
 # waited for its answer on each axis, and the first level where that reached
@@ -255,7 +263,7 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
         "faults": FAULTS,
         "soak": _soak("rtos", "0"),
         "stack_overflow": _stack_overflow("cmdDisp", r"ZEPHYR FATAL ERROR 2: Stack overflow"),
-        "assert": ASSERT,
+        "assert": RTOS_ASSERT,
     },
 }
 SCENARIOS = ("nominal", "load", "faults", "soak", "stack_overflow", "assert")
