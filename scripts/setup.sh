@@ -118,19 +118,34 @@ west_update() {
   rm -f "$log"
 }
 
+# Where an upstream's patches apply: its workspace copy (deps/<project>), or,
+# for a Python package the venv installs from PyPI (fprime-gds), the folder
+# its installed files are under (site-packages)
+patch_target() {
+  local project=$1 installed
+  if [ -d "$WS/$project" ]; then
+    printf '%s\n' "$WS/$project"
+    return
+  fi
+  installed=$("$VENV/bin/python" -c 'import importlib.metadata as m, sys; print(m.distribution(sys.argv[1]).locate_file(""))' \
+    "$project" 2>/dev/null) || die "a patch names '$project', which is neither in the workspace nor installed in $VENV"
+  printf '%s\n' "$installed"
+}
+
 # Upstream fixes the kit needs, kept as small explained patches with the
 # module glue of the upstream they fix (modules/<project>/patches/*.patch),
-# applied to the workspace copy (deps/<project>).
+# applied to its copy (patch_target).
 apply_patches() {
-  local patch project
+  local patch project target
   for patch in "$KIT_ROOT"/modules/*/patches/*.patch; do
     [ -f "$patch" ] || continue
     project=$(basename "$(dirname "$(dirname "$patch")")")
-    [ -d "$WS/$project" ] || die "patch $patch names '$project', which is not in the workspace"
-    if git -C "$WS/$project" apply --reverse --check "$patch" 2>/dev/null; then
+    target=$(patch_target "$project")
+    if git -C "$target" apply --reverse --check "$patch" 2>/dev/null; then
       continue  # already applied
     fi
-    git -C "$WS/$project" apply "$patch" || die "patch $patch does not apply to $project: was the pin in west.yml changed?"
+    git -C "$target" apply "$patch" \
+      || die "patch $patch does not apply to $project: was its pin (west.yml, scripts/requirements.txt) changed?"
     say "patched $project: $(basename "$patch")"
   done
 }

@@ -73,6 +73,27 @@ def check_provisioned() -> None:
         raise KitError(f"the workspace is not provisioned (missing: {what}). Run scripts/setup.sh first.")
 
 
+GDS_MISSING = "fprime-gds is not installed: run scripts/setup.sh (it installs the pinned fprime-gds)"
+
+
+def check_gds_patched() -> None:
+    """KitError unless the installed fprime-gds carries every patch the kit
+    keeps for it (modules/fprime-gds/patches, applied by scripts/setup.sh):
+    a ground station on an unfixed fprime-gds would stall file uplinks."""
+    import importlib.metadata
+
+    try:
+        installed = Path(str(importlib.metadata.distribution("fprime-gds").locate_file("")))
+    except importlib.metadata.PackageNotFoundError as error:
+        raise KitError(GDS_MISSING) from error
+    for patch in sorted((KIT_ROOT / "modules" / "fprime-gds" / "patches").glob("*.patch")):
+        check = subprocess.run(["git", "-C", str(installed), "apply", "--reverse", "--check", str(patch)],
+                               capture_output=True, check=False)
+        if check.returncode != 0:
+            raise KitError(f"fprime-gds in {installed} lacks the kit's patch {patch.name}: run scripts/setup.sh "
+                           "(it applies the patches after installing fprime-gds)")
+
+
 def uncommitted_changes(root: Path | None = None) -> list[str]:
     """The kit's tracked files with uncommitted changes (git status), empty
     for a committed tree or where git cannot tell."""

@@ -40,7 +40,7 @@ KIT_PRIORITIES = {"comQueue": 5, "telemetry": 4, "event": 3, "load": 1}
 #: dictionary and names both counts when one is short (`kit sizing` gives
 #: the dictionary's)
 FIRST_COMMANDS = 128
-#: The main thread's stack, a first size (the kit's boards' largest default is 3072)
+#: The main thread's stack, a first size (the kit's boards' largest default is 3200)
 MAIN_STACK = 8192
 #: The kit's C heap without its optional services (app/Kconfig's COMMON_LIBC_MALLOC_ARENA_SIZE)
 KIT_HEAP = 10816

@@ -28,7 +28,7 @@ from kittools.build.folder import BuildFolder, kit_kconfig_digest
 from kittools.build.runner import Qemu, asks_at_boot, ends_run
 from kittools.deployment import Deployment
 from kittools.link.client import line_rate
-from kittools.workspace import KIT_ROOT, KitError, board_dir_name, environment
+from kittools.workspace import GDS_MISSING, KIT_ROOT, KitError, board_dir_name, check_gds_patched, environment
 
 BOOT_TIMEOUT_S = 60.0
 GDS_TIMEOUT_S = 60.0
@@ -162,7 +162,8 @@ class GroundStation:
                            "CONFIG_KIT_SCENARIO_AT_BOOT=y to choose it at boot): its firmware would not wait for "
                            "the ground")
         if shutil.which("fprime-gds", path=environment().get("PATH")) is None:
-            raise KitError("fprime-gds is not installed: run scripts/setup.sh (it installs the pinned fprime-gds)")
+            raise KitError(GDS_MISSING)
+        check_gds_patched()
         self.logs = logs
         self.gui = gui
         self.gui_port = gui_port
