@@ -5,6 +5,7 @@
 // ======================================================================
 #include "app/Components/TlmTable/TlmTable.hpp"
 #include <Fw/Types/Assert.hpp>
+#include <cstring>
 
 namespace Kit {
 
@@ -47,8 +48,15 @@ void TlmTable::TlmRecv_handler(FwIndexType portNum, FwChanIdType id, Fw::Time& t
     entry.sequence.store(sequence + 1, std::memory_order_relaxed);
     std::atomic_thread_fence(std::memory_order_release);
     entry.id = id;
-    entry.lastUpdate = timeTag;
-    entry.buffer = val;
+    entry.seconds = timeTag.getSeconds();
+    entry.useconds = timeTag.getUSeconds();
+    entry.timeBase = static_cast<FwTimeBaseStoreType>(timeTag.getTimeBase().e);
+    entry.context = timeTag.getContext();
+    // A TlmBuffer holds at most FW_TLM_BUFFER_MAX_SIZE bytes: the entry's size
+    const FwSizeType size = val.getSize();
+    FW_ASSERT(size <= sizeof(entry.value), static_cast<FwAssertArgType>(size));
+    entry.size = static_cast<ValueSize>(size);
+    (void)std::memcpy(entry.value, val.getBuffAddr(), size);
     // Even again, never 0 (a free entry's) across the counter's wrap
     const U32 next = (sequence + 2 == 0) ? 2 : sequence + 2;
     entry.sequence.store(next, std::memory_order_release);
@@ -58,13 +66,20 @@ Fw::TlmValid TlmTable::TlmGet_handler(FwIndexType portNum, FwChanIdType id, Fw::
     // Guarded port: no writer is in any entry
     const U32 index = this->find(id);
     if (index < ENTRIES && this->m_entries[index].sequence.load(std::memory_order_relaxed) != 0) {
-        val = this->m_entries[index].buffer;
-        timeTag = this->m_entries[index].lastUpdate;
+        read(this->m_entries[index], timeTag, val);
         return Fw::TlmValid::VALID;
     }
     // Not written yet
     val.resetSer();
     return Fw::TlmValid::INVALID;
+}
+
+void TlmTable::read(const Entry& entry, Fw::Time& time, Fw::TlmBuffer& buffer) {
+    time.set(TimeBase(static_cast<TimeBase::T>(entry.timeBase)), entry.context, entry.seconds, entry.useconds);
+    // size is at most the buffer's capacity: a torn copy is thrown away by
+    // snapshot(), never a larger one
+    const Fw::SerializeStatus status = buffer.setBuff(entry.value, entry.size);
+    FW_ASSERT(status == Fw::FW_SERIALIZE_OK, static_cast<FwAssertArgType>(status));
 }
 
 bool TlmTable::snapshot(U32 index, Snapshot& copy) const {
@@ -75,8 +90,7 @@ bool TlmTable::snapshot(U32 index, Snapshot& copy) const {
             return false;
         }
         copy.id = entry.id;
-        copy.time = entry.lastUpdate;
-        copy.buffer = entry.buffer;
+        read(entry, copy.time, copy.buffer);
         std::atomic_thread_fence(std::memory_order_acquire);
         if (entry.sequence.load(std::memory_order_relaxed) == before) {
             copy.sequence = before;

@@ -10,6 +10,7 @@
 #include <Fw/Tlm/TlmPacket.hpp>
 #include <atomic>
 #include <config/TlmChanImplCfg.hpp>
+#include <type_traits>
 #include "app/Components/TlmTable/TlmTableComponentAc.hpp"
 
 namespace Kit {
@@ -36,12 +37,24 @@ class TlmTable final : public TlmTableComponentBase {
     //! read copies an entry and keeps the copy only when the number did not
     //! move meanwhile (a sequence lock): it never blocks a writer, and a
     //! writer never waits for it.
+    //! A value's size: one byte where the build's largest value fits in it
+    //! (the boards' builds), else two (F´'s default sizes, the host tests)
+    using ValueSize = std::conditional<FW_TLM_BUFFER_MAX_SIZE <= 0xFF, U8, U16>::type;
+    static_assert(FW_TLM_BUFFER_MAX_SIZE <= 0xFFFF, "a value's size fits its entry");
+
+    //! The value and its time are kept as their bytes and fields, not as
+    //! F´'s Fw::TlmBuffer and Fw::Time (each a serializable object with its
+    //! own bookkeeping): 40 B an entry where those made 72 B
     struct Entry {
         FwChanIdType id = 0;
         std::atomic<U32> sequence{0};
         U32 sentSequence = 0;  //!< The sequence of the value the last Run sent (Run's alone)
-        Fw::Time lastUpdate;
-        Fw::TlmBuffer buffer;
+        U32 seconds = 0;
+        U32 useconds = 0;
+        FwTimeBaseStoreType timeBase = 0;
+        FwTimeContextStoreType context = 0;
+        ValueSize size = 0;  //!< The value's bytes
+        U8 value[FW_TLM_BUFFER_MAX_SIZE] = {};
     };
 
     //! One entry's value as Run copied it
@@ -66,6 +79,9 @@ class TlmTable final : public TlmTableComponentBase {
     //! ENTRIES when the table is full and id is not in it. Writers' (under
     //! the guarded ports' lock)
     U32 find(FwChanIdType id) const;
+
+    //! An entry's value and time into F´'s types
+    static void read(const Entry& entry, Fw::Time& time, Fw::TlmBuffer& buffer);
 
     //! Entry index's value into copy, when it was written since the last Run
     //! sent it and the copy is whole: false when nothing is new, when a
