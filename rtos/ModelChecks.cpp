@@ -39,6 +39,19 @@ static_assert(zephyrPriority(RATE_GROUP_PRIORITIES[0], CONFIG_NUM_PREEMPT_PRIORI
                       CONFIG_MAIN_THREAD_PRIORITY,
               "Tables.fpp (the deployment's, or the board's) and CONFIG_MAIN_THREAD_PRIORITY: only the fastest "
               "rate group may be more urgent than the tick thread");
+// The shared thread wakes on its members' sends, which only the kit's queue
+// tells it of (rtos/Os/SharedThread.hpp)
+#if CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH > 0
+#if !defined(CONFIG_KIT_QUEUE_KIT)
+#error "CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH: the shared thread needs the kit's queue (CONFIG_KIT_QUEUE_KIT)"
+#endif
+static_assert(CONFIG_KIT_RTOS_SHARED_LEVEL_LOW <= CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH,
+              "CONFIG_KIT_RTOS_SHARED_LEVEL_LOW is above CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH");
+// Rate groups are what the kit measures: each keeps its own thread
+static_assert(static_cast<int>(RATE_GROUP_PRIORITIES[RATE_GROUP_COUNT - 1]) > CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH,
+              "CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH: a rate group's level is in the shared band; every rate group "
+              "keeps a thread of its own");
+#endif
 // Every task's stack comes from the kit's heap, sized from the same table
 // (rtos/ThreadStacks.cpp): a pool slot would take a stack before it does
 static_assert(CONFIG_DYNAMIC_THREAD_POOL_SIZE == 0,

@@ -15,11 +15,19 @@
 // used once, at start-up, never freed. A stack the heap cannot give fails
 // the component's start, and F´ asserts on it (ERROR_RESOURCES): never a
 // thread with a smaller stack.
+//
+// Where the build shares one thread among a band of levels
+// (rtos/Os/SharedThread.hpp), the band's tasks ask for no stack: the heap
+// holds the shared thread's instead, the largest of theirs in the table
+// (one member runs at a time, to the end of its message, so the deepest
+// of them is the thread's deepest).
 // ======================================================================
 #include "rtos/ThreadStacks.hpp"
 #include "Top/ActiveStacks.hpp"
+#include "rtos/Os/SharedThread.hpp"
 
 #include <zephyr/kernel.h>
+#include <Fw/Types/Assert.hpp>
 
 namespace Kit {
 namespace ThreadStacks {
@@ -37,10 +45,38 @@ constexpr FwSizeType PER_STACK_BYTES = 16 + Z_KERNEL_STACK_OBJ_ALIGN;
 // trims (the last stack's alignment)
 constexpr FwSizeType HEAP_BYTES = 128 + Z_KERNEL_STACK_OBJ_ALIGN;
 
+#if !defined(KIT_ACTIVE_PRIORITIES)
+static_assert(!SharedThread::enabled(),
+              "CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH: the deployment's Top/ActiveStacks.hpp has no ACTIVE_PRIORITIES "
+              "(app/Top/ActiveStacks.hpp has the kit's), so no task can be placed on the shared thread");
+constexpr bool shared(FwSizeType) {
+    return false;
+}
+#else
+constexpr bool shared(FwSizeType index) {
+    return SharedThread::hosts(ACTIVE_PRIORITIES[index]);
+}
+#endif
+
+//! The shared thread's stack: its members' largest (0: no member)
+constexpr FwSizeType sharedStackSize() {
+    FwSizeType largest = 0;
+    for (FwSizeType i = 0; i < ACTIVE_STACK_ENTRIES; i++) {
+        largest = (shared(i) && ACTIVE_STACKS[i] > largest) ? ACTIVE_STACKS[i] : largest;
+    }
+    return largest;
+}
+static_assert(!SharedThread::enabled() || sharedStackSize() > 0,
+              "CONFIG_KIT_RTOS_SHARED_LEVEL_LOW/HIGH: no active instance of the table has a level in the band");
+
+//! Every thread's stack but the shared band's, and the shared thread's
 constexpr FwSizeType heapSize() {
     FwSizeType bytes = HEAP_BYTES;
     for (FwSizeType i = 0; i < ACTIVE_STACK_ENTRIES; i++) {
-        bytes += K_KERNEL_STACK_LEN(ACTIVE_STACKS[i]) + PER_STACK_BYTES;
+        bytes += shared(i) ? 0 : K_KERNEL_STACK_LEN(ACTIVE_STACKS[i]) + PER_STACK_BYTES;
+    }
+    if (SharedThread::enabled()) {
+        bytes += K_KERNEL_STACK_LEN(sharedStackSize()) + PER_STACK_BYTES;
     }
     return bytes;
 }
@@ -55,6 +91,14 @@ void provide() {
     // The threads this thread starts inherit its pool; they allocate nothing
     // from it (the kit's queues are F´'s, on the C heap)
     k_thread_heap_assign(k_current_get(), &s_heap);
+    // The shared thread's stack from the same heap, as the other threads'
+    // (the first of them, where the dispatcher's was: what an overflow
+    // runs into below it is what it was)
+    if (SharedThread::enabled()) {
+        k_thread_stack_t* const stack = k_thread_stack_alloc(sharedStackSize(), 0);
+        FW_ASSERT(stack != nullptr, static_cast<FwAssertArgType>(sharedStackSize()));
+        SharedThread::start(stack, sharedStackSize());
+    }
 }
 
 }  // namespace ThreadStacks

@@ -12,6 +12,7 @@
 // ======================================================================
 #include "app/src/Variant.hpp"
 #include "rtos/AssertReport.hpp"
+#include "rtos/Os/SharedThread.hpp"
 #include "rtos/ThreadStacks.hpp"
 
 #include <zephyr/kernel.h>
@@ -142,6 +143,17 @@ U32 cpu(CpuUse (&out)[MAX_CONTEXTS]) {
     // Counted from boot: the run plus start-up, which is short next to it
     Table<CpuUse> table{out, 0, 0};
     k_thread_foreach(addCpu, &table);
+    // The shared thread's members, each its share of that thread's cycles
+    // (the thread's own line holds them all)
+    for (U32 i = 0; i < SharedThread::memberCount(); i++) {
+        if (table.count >= MAX_CONTEXTS) {
+            table.overflow++;
+            continue;
+        }
+        const SharedThread::MemberUse use = SharedThread::memberUse(i);
+        const U32 average = use.runs == 0 ? 0 : static_cast<U32>(use.cycles / use.runs);
+        table.entries[table.count++] = {{nullptr, use.owner}, use.runs, average, use.maxCycles, use.cycles, true};
+    }
     FW_ASSERT(table.overflow == 0, static_cast<FwAssertArgType>(table.overflow));
     return table.count;
 }

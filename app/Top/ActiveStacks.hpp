@@ -41,6 +41,35 @@ constexpr FwSizeType ACTIVE_STACKS[] = {
 };
 constexpr FwSizeType ACTIVE_STACK_ENTRIES = sizeof(ACTIVE_STACKS) / sizeof(ACTIVE_STACKS[0]);
 
+//! The priority of each, in the same order: the rtos model's shared thread
+//! (rtos/Os/SharedThread.hpp) takes the stacks of the levels it hosts
+//! out of the threads' heap (rtos/ThreadStacks.cpp). A deployment's own
+//! ActiveStacks.hpp without this list runs every task on a thread of its own.
+#define KIT_ACTIVE_PRIORITIES 1
+constexpr FwTaskPriorityType ACTIVE_PRIORITIES[] = {
+#if !defined(CONFIG_KIT_RATE_GROUPS_PASSIVE)
+    Priorities::rg1kHz,       Priorities::rg100Hz, Priorities::rg10Hz,
+#endif
+#if !defined(CONFIG_KIT_CMD_DISPATCHER_PASSIVE)
+    Priorities::cmdDisp,
+#endif
+    Priorities::events,       Priorities::tlmSend, Priorities::load,   Priorities::comQueue,
+#if defined(CONFIG_KIT_SERVICE_PARAMS)
+    Priorities::prmDb,
+#endif
+#if defined(CONFIG_KIT_SERVICE_FILES)
+    Priorities::fileDownlink,
+#endif
+#if defined(CONFIG_KIT_SERVICE_FILE_UPLINK)
+    Priorities::fileUplink,
+#endif
+#if defined(CONFIG_KIT_SERVICE_SEQUENCER)
+    Priorities::cmdSeq,
+#endif
+};
+static_assert(sizeof(ACTIVE_PRIORITIES) / sizeof(ACTIVE_PRIORITIES[0]) == ACTIVE_STACK_ENTRIES,
+              "ACTIVE_PRIORITIES and ACTIVE_STACKS list the same instances");
+
 }  // namespace Kit
 
 #endif

@@ -16,7 +16,10 @@ module Kit {
   # in rtos/Os/PriorityMap.hpp. The tick (the main loop) is above every task
   # but the fastest rate group (rtos; baremetal runs the tick first anyway).
   # Rate groups by rate, then the dispatcher, then the downlink
-  # above the services that feed it, then the background load. The downlink
+  # above the services that feed it, then the background load. Where a
+  # board shares one thread among a band of levels (qemu_cortex_m3: 2 to 6,
+  # rtos/Os/SharedThread.hpp), the order within the band holds message by
+  # message: the thread takes the most urgent member's message first. The downlink
   # (ComQueue) must be above them: it answers its own sends through its own
   # queue (comStatusIn), which asserts when full, and a feeder that runs
   # between its taking a message and that answer can fill the slot it freed
@@ -49,7 +52,11 @@ module Kit {
   }
 
   # Thread stacks (RTOS variant; the baremetal TaskRunner shares the main
-  # stack and ignores them), each its own size (rtos/ThreadStacks.cpp). The
+  # stack and ignores them), each its own size (rtos/ThreadStacks.cpp).
+  # Where a board shares one thread among a band of levels
+  # (CONFIG_KIT_RTOS_SHARED_LEVEL_LOW/HIGH, rtos/Os/SharedThread.hpp), that
+  # thread's stack is the largest of its members' here: one member runs at
+  # a time, to the end of its message, so the rule below holds for it. The
   # rule: the thread's high-water mark over every run of the suite on both
   # boards ("KIT STACK" lines: the nominal, load and faults scenarios; the
   # serial-load sweep through the ground link, whose uplink at its line

@@ -414,8 +414,8 @@ void cpu(U64 runCycles) {
     const char* const kind = contextKindName(Variant::contextKind());
     for (U32 i = 0; i < count; i++) {
         const Variant::CpuUse& use = entries[i];
-        printk("KIT CPU name=%s context=%s runs=%u avg=%u max=%u cpu_permille=%u\n", contextName(use.context), kind,
-               static_cast<unsigned>(use.runs), static_cast<unsigned>(use.avgCycles),
+        printk("KIT CPU name=%s context=%s runs=%u avg=%u max=%u cpu_permille=%u\n", contextName(use.context),
+               use.shared ? "shared" : kind, static_cast<unsigned>(use.runs), static_cast<unsigned>(use.avgCycles),
                static_cast<unsigned>(use.maxCycles), static_cast<unsigned>(permille(use.cycles, runCycles)));
     }
 }

@@ -58,6 +58,9 @@ struct CpuUse {
     U32 avgCycles;  //!< per run
     U32 maxCycles;  //!< the longest run
     U64 cycles;     //!< in all
+    //! A task run on the rtos model's shared thread (rtos/Os/SharedThread.hpp),
+    //! whose own line holds its cycles too: "context=shared"
+    bool shared = false;
 };
 
 //! How a time-budgeted cooperative policy treated one context (baremetal's

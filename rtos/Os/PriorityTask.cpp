@@ -5,6 +5,7 @@
 // ======================================================================
 #include "rtos/Os/PriorityTask.hpp"
 #include "rtos/Os/PriorityMap.hpp"
+#include "rtos/Os/SharedThread.hpp"
 
 #include <zephyr/kernel.h>
 #include <Fw/Types/Assert.hpp>
@@ -13,6 +14,9 @@
 namespace Kit {
 
 Os::TaskInterface::Status PriorityTask::start(const Arguments& arguments) {
+    if (SharedThread::hosts(arguments.m_priority)) {
+        return SharedThread::join(arguments);  // no thread of its own
+    }
     const int mapped = zephyrPriority(arguments.m_priority, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY);
     // A priority outside the table is a topology error, not something to clamp
     FW_ASSERT(mapped >= 0, static_cast<FwAssertArgType>(arguments.m_priority));

@@ -12,7 +12,8 @@ namespace Kit {
 
 class PriorityTask final : public Os::Zephyr::Task::ZephyrTask {
   public:
-    //! Start with the F´ priority mapped onto Zephyr's (asserts if it cannot be)
+    //! Start with the F´ priority mapped onto Zephyr's (asserts if it cannot
+    //! be), or on the shared thread where its level is one it hosts
     Status start(const Arguments& arguments) override;
 };
 

@@ -60,6 +60,9 @@ Os::QueueInterface::Status ZephyrQueue::send(const U8* buffer,
         Stages::mark(StageMark::QUEUED);  // before the give: a more urgent receiver runs inside it
     }
     k_sem_give(&m_messages);
+    if (m_handle.m_listener != nullptr) {
+        k_sem_give(m_handle.m_listener);
+    }
     return Status::OP_OK;
 }
 

@@ -22,7 +22,11 @@
 
 namespace Kit {
 
-struct ZephyrQueueHandle : public Os::QueueHandle {};
+struct ZephyrQueueHandle : public Os::QueueHandle {
+    //! Given after each send where set: the shared thread's wake-up, for a
+    //! queue whose component runs on it (rtos/Os/SharedThread.cpp)
+    struct k_sem* m_listener = nullptr;
+};
 
 class ZephyrQueue final : public Os::QueueInterface {
   public:

@@ -124,6 +124,22 @@ def test_the_tasks_table_says_what_each_model_runs_as_a_task_and_why():
     assert rows["rg1kHz"][:2] == ["cooperative task", "passive (runs in its caller)"]
 
 
+def test_a_task_on_the_shared_thread_says_so_and_counts_no_switches_of_its_own():
+    data = results()
+    found = data.variants["rtos"]
+    switches = analysis.switches_per_second(data, "rtos")
+    cpu = [r for r in found.records if r["kind"] == "CPU" and r.get("name") not in ("idle", "main")]
+    assert cpu, "the fixture's rtos has component threads"
+    member = dict(cpu[0], context="shared", runs="1000")
+    found.records = [*found.records, dict(cpu[0], name="services"), member]
+    found.records.remove(cpu[0])
+    rows = {row[0]: row[1:] for row in analysis.tasks_table(data).rows}
+    assert rows[member["name"]][1] == "on the shared thread"
+    assert "services" not in rows  # the thread is not a component
+    # The member's runs are in the shared thread's own line: counted once
+    assert analysis.switches_per_second(data, "rtos") == switches
+
+
 def test_choosing_says_which_model_misses_with_nothing_added():
     data = results()
     found = analysis.sweeps(data)

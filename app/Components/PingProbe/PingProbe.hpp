@@ -16,7 +16,7 @@ namespace Kit {
 //! 20 per entry at 10 Hz). Fixed RAM whatever the run's length.
 class PingRoundTrips {
   public:
-    static constexpr U32 WINDOW = 32;
+    static constexpr U32 WINDOW = 24;
 
     void add(U32 cycles);
     U32 count() const { return m_count; }

@@ -133,7 +133,8 @@ def switches_per_second(data: Results, variant: str) -> float | None:
     out), when the variant's tasks are threads (TASK context=thread):
     cooperative slices of one loop are not context switches."""
     found = data.variants[variant]
-    records = [r for r in found.of_kind("CPU") if r.get("name") != "idle"]
+    # A shared thread's members are in its own line's runs already
+    records = [r for r in found.of_kind("CPU") if r.get("name") != "idle" and r.get("context") != "shared"]
     ticks, tick_hz = data.condition("run_ticks"), data.condition("tick_hz")
     if not records or ticks <= 0 or tick_hz <= 0 or found.context_kind() != "thread":
         return None
@@ -364,9 +365,9 @@ TASK_REASONS = {
 }
 #: ... and of every rate group, whatever the deployment names it (its RG records)
 RATE_GROUP_REASON = "a passive form: F´'s PassiveRateGroup (baremetal_passive)"
-#: CPU records that are not component tasks (rtos's "assert" reports an F´
-#: assert on a stack of its own: rtos/AssertReport.cpp)
-NOT_COMPONENTS = ("idle", "main", "assert")
+#: CPU records that are not component tasks (rtos's "assert": rtos/AssertReport.cpp;
+#: its "services" runs a band of levels' tasks, context=shared: rtos/Os/SharedThread.hpp)
+NOT_COMPONENTS = ("idle", "main", "assert", "services")
 
 
 def tasks_table(data: Results) -> Table | None:
@@ -379,7 +380,7 @@ def tasks_table(data: Results) -> Table | None:
     components = sorted({c for found in kinds.values() for c in found})
     if not components:
         return None
-    shown = {"thread": "thread", "slice": "cooperative task"}
+    shown = {"thread": "thread", "slice": "cooperative task", "shared": "on the shared thread"}
 
     def cell(v: str, c: str) -> str:
         if not data.variants[v].of_kind("CPU"):

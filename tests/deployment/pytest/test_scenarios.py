@@ -167,6 +167,10 @@ def _stack_overflow(context: str, first: str) -> list[str]:
     return [first, rf"KIT HALT reason=stack_overflow code=2 context={context} expected=yes"]
 
 
+# Stands for the rtos thread the dispatcher runs on: its own, or the shared
+# thread where the build's band of levels holds its level (see
+# dispatcher_thread())
+DISPATCHER_THREAD = "DISPATCHER_THREAD"
 BAREMETAL_STACK_FAULT = r"KIT FATAL stack=main guard_word=[0-9]+ address=0x[0-9a-f]+: stack overflow"
 # Stands for what F´ prints for the injected assert (Fw/Types/Assert.cpp) at
 # the build's assert level (modules/fprime/Kconfig): see assert_report()
@@ -262,7 +266,7 @@ EXPECTED: dict[str, dict[str, list[str]]] = {
         ],
         "faults": FAULTS,
         "soak": _soak("rtos", "0"),
-        "stack_overflow": _stack_overflow("cmdDisp", r"ZEPHYR FATAL ERROR 2: Stack overflow"),
+        "stack_overflow": _stack_overflow(DISPATCHER_THREAD, r"ZEPHYR FATAL ERROR 2: Stack overflow"),
         "assert": RTOS_ASSERT,
     },
 }
@@ -298,11 +302,31 @@ def assert_report(build_dir: Path) -> str:
     return r'Assert: ".*app/Components/Faults/Faults.cpp:[0-9]+" 42'
 
 
+def dispatcher_thread(build_dir: Path) -> str:
+    """The rtos thread the dispatcher runs on: "services" where its level
+    (the build's priority table, as FPP generated it) is in the band that
+    shares one thread (CONFIG_KIT_RTOS_SHARED_LEVEL_LOW/HIGH,
+    rtos/Os/SharedThread.hpp), else its own, "cmdDisp"."""
+    high = int(config_value(build_dir, "CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH", default="0"))
+    if high == 0:
+        return "cmdDisp"
+    low = int(config_value(build_dir, "CONFIG_KIT_RTOS_SHARED_LEVEL_LOW"))
+    constants = (build_dir / "app" / "Top" / "FppConstantsAc.hpp").read_text()
+    # The Priorities namespace, to the next one (Stacks)
+    priorities = re.search(r"namespace Priorities \{(.*?)(namespace |\Z)", constants, re.DOTALL)
+    assert priorities, f"{build_dir}: no Priorities in the topology's FppConstantsAc.hpp"
+    level = re.search(r"\bcmdDisp = ([0-9]+)", priorities.group(1))
+    assert level, f"{build_dir}: no dispatcher in the priority table"
+    return "services" if low <= int(level.group(1)) <= high else "cmdDisp"
+
+
 def for_build(build_dir: Path, expected: list[str]) -> list[str]:
     """A scenario's expectations with the build's own values in place of
-    ICOUNT_SHIFT and ASSERT_REPORT."""
+    ICOUNT_SHIFT, ASSERT_REPORT and DISPATCHER_THREAD."""
     values = {ICOUNT_SHIFT: config_value(build_dir, "CONFIG_QEMU_ICOUNT_SHIFT", default="0"),
               ASSERT_REPORT: assert_report(build_dir)}
+    if DISPATCHER_THREAD in "".join(expected):
+        values[DISPATCHER_THREAD] = dispatcher_thread(build_dir)
     for placeholder, value in values.items():
         expected = [pattern.replace(placeholder, value) for pattern in expected]
     if config_value(build_dir, "CONFIG_KIT_DISPATCH_STAGES", default="n") != "y":
