@@ -146,12 +146,12 @@ bool rateGroups(U32 ticks) {
 void banner() {
     printk(
         "KIT BANNER variant=%s board=%s kit=%s zephyr=%s/%s fprime=%s tick_hz=%u sys_tick_hz=%u "
-        "cycles_hz=%u icount_shift=%u run_ticks=%u hyperperiod_ticks=%u\n",
+        "cycles_hz=%u icount_shift=%u run_ticks=%u hyperperiod_ticks=%u timing_buckets=%u\n",
         CONFIG_KIT_VARIANT_NAME, CONFIG_BOARD_TARGET, KIT_GIT_SHA, KERNEL_VERSION_STRING, ZEPHYR_GIT_SHA,
         FPRIME_GIT_SHA, static_cast<unsigned>(CONFIG_KIT_TICK_HZ),
         static_cast<unsigned>(CONFIG_SYS_CLOCK_TICKS_PER_SEC), static_cast<unsigned>(TickClock::cyclesPerSecond()),
         static_cast<unsigned>(CONFIG_QEMU_ICOUNT_SHIFT), static_cast<unsigned>(CONFIG_KIT_RUN_TICKS),
-        static_cast<unsigned>(Session::hyperperiod()));
+        static_cast<unsigned>(Session::hyperperiod()), static_cast<unsigned>(1U << CONFIG_KIT_TIMING_SUB_BITS));
 }
 
 void linkReady() {

@@ -79,7 +79,8 @@ def metrics(data: VariantData) -> dict[MetricId, float]:
 
 def conditions(data: VariantData) -> dict[str, str]:
     banner = data.run.one("BANNER").fields
-    keys = ("board", "kit", "zephyr", "fprime", "tick_hz", "sys_tick_hz", "cycles_hz", "icount_shift", "run_ticks")
+    keys = ("board", "kit", "zephyr", "fprime", "tick_hz", "sys_tick_hz", "cycles_hz", "icount_shift", "run_ticks",
+            "timing_buckets")
     return {k: banner[k] for k in keys if k in banner}
 
 

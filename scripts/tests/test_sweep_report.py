@@ -10,7 +10,7 @@ import pytest
 from kittools import console, metrics, model, sweep
 from kittools.link import client, services
 from kittools.link.dictionary import Dictionary
-from kittools.report import analysis, link_report, writer
+from kittools.report import analysis, conditions, link_report, writer
 from kittools.sizes.memory import Footprint
 
 from sample_console import console_log
@@ -376,3 +376,11 @@ def test_the_tasks_table_knows_any_deployments_rate_groups_by_their_records():
                 record["name"] = "rg50Hz"
     rows = {row[0]: row[1:] for row in analysis.tasks_table(data).rows}
     assert rows["rg50Hz"][-1] == analysis.RATE_GROUP_REASON
+
+
+def test_the_conditions_say_how_fine_the_timing_histograms_are():
+    data = results()
+    assert not any("Timing histograms" in line for line in conditions.conditions_text(data).lines)
+    data.conditions["timing_buckets"] = "4"  # CONFIG_KIT_TIMING_SUB_BITS=2 (qemu_cortex_m3)
+    assert ("Timing histograms: 4 buckets per power of two, so a percentile is within 25 % above its true value; "
+            "min and max are exact.") in conditions.conditions_text(data).lines

@@ -9,34 +9,10 @@ from collections.abc import Callable
 
 from kittools import model, sweep
 from kittools.model import Results
-from kittools.report.document import CAVEAT, Table, Text, fmt, kib
+from kittools.report.document import Table, Text, fmt, kib
 
 #: The knee of a sweep: the first load at which the fastest group's p99 is this much over its zero-load value
 KNEE_FACTOR = 1.1
-
-
-def conditions_text(data: Results) -> Text:
-    c = data.conditions
-    built_only = c.get("run")  # a board only built (results.built_only): no times, so no caveat on them
-    if built_only:
-        lines = [f"Board {c.get('board')}: {built_only}."]
-    else:
-        lines = [f"Board {c.get('board')}; kit {c.get('kit')}; Zephyr {c.get('zephyr')}; F´ {c.get('fprime')}.",
-                 f"Rate-group tick {c.get('tick_hz')} Hz, system clock {c.get('sys_tick_hz')} Hz, cycle counter "
-                 f"{c.get('cycles_hz')} Hz, QEMU icount shift {c.get('icount_shift')}, run of "
-                 f"{c.get('run_ticks')} ticks."]
-    deployments = sorted({str(data.variants[name].build["deployment"]) for name in data.names()
-                          if data.variants[name].build.get("deployment")})
-    if deployments:
-        lines.append(f"F´ deployment measured: {', '.join(deployments)} (its folder in the kit; app is the "
-                     "reference deployment).")
-    for name in data.names():
-        build = data.variants[name].build
-        if build.get("toolchain"):
-            lines.append(f"{name}: {build['toolchain']}.")
-    if not built_only:
-        lines.append(CAVEAT)
-    return Text("Conditions", lines)
 
 
 def _against_first(values: dict[str, float], unit: str = "") -> str:

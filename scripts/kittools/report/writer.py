@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from kittools.model import Results
-from kittools.report import analysis, link_report, plots, render, tables
+from kittools.report import analysis, conditions, link_report, plots, render, tables
 from kittools.report.document import Image, Section
 from kittools.suite import budget, results
 from kittools.suite.budget import Budget
@@ -43,7 +43,7 @@ def build_sections(data: Results, baseline: Results | None, limits: Budget,
     `verdict` when the caller has it already (kit test judged the board
     before it asks for the report), else checked here against `baseline`."""
     names = data.names()
-    sections: list[Section] = [analysis.conditions_text(data), analysis.findings(data),
+    sections: list[Section] = [conditions.conditions_text(data), analysis.findings(data),
                                analysis.choosing(data, analysis.sweeps(data)), tables.metrics_table(data)]
     tasks = analysis.tasks_table(data)
     if tasks is not None:
