@@ -45,16 +45,18 @@ constexpr FwSizeType PER_STACK_BYTES = 16 + Z_KERNEL_STACK_OBJ_ALIGN;
 // trims (the last stack's alignment)
 constexpr FwSizeType HEAP_BYTES = 128 + Z_KERNEL_STACK_OBJ_ALIGN;
 
-#if !defined(KIT_ACTIVE_PRIORITIES)
-static_assert(!SharedThread::enabled(),
-              "CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH: the deployment's Top/ActiveStacks.hpp has no ACTIVE_PRIORITIES "
-              "(app/Top/ActiveStacks.hpp has the kit's), so no task can be placed on the shared thread");
-constexpr bool shared(FwSizeType) {
-    return false;
-}
-#else
+// The band shares a thread where the deployment lists its tasks' levels
+// beside their stacks (ACTIVE_PRIORITIES: the kit's deployment does); one
+// that does not keeps a thread for each task, as fprime-zephyr makes them
+#if defined(KIT_ACTIVE_PRIORITIES)
+constexpr bool SHARING = SharedThread::enabled();
 constexpr bool shared(FwSizeType index) {
     return SharedThread::hosts(ACTIVE_PRIORITIES[index]);
+}
+#else
+constexpr bool SHARING = false;
+constexpr bool shared(FwSizeType) {
+    return false;
 }
 #endif
 
@@ -66,7 +68,7 @@ constexpr FwSizeType sharedStackSize() {
     }
     return largest;
 }
-static_assert(!SharedThread::enabled() || sharedStackSize() > 0,
+static_assert(!SHARING || sharedStackSize() > 0,
               "CONFIG_KIT_RTOS_SHARED_LEVEL_LOW/HIGH: no active instance of the table has a level in the band");
 
 //! Every thread's stack but the shared band's, and the shared thread's
@@ -75,7 +77,7 @@ constexpr FwSizeType heapSize() {
     for (FwSizeType i = 0; i < ACTIVE_STACK_ENTRIES; i++) {
         bytes += shared(i) ? 0 : K_KERNEL_STACK_LEN(ACTIVE_STACKS[i]) + PER_STACK_BYTES;
     }
-    if (SharedThread::enabled()) {
+    if (SHARING) {
         bytes += K_KERNEL_STACK_LEN(sharedStackSize()) + PER_STACK_BYTES;
     }
     return bytes;
@@ -94,7 +96,7 @@ void provide() {
     // The shared thread's stack from the same heap, as the other threads'
     // (the first of them, where the dispatcher's was: what an overflow
     // runs into below it is what it was)
-    if (SharedThread::enabled()) {
+    if (SHARING) {
         k_thread_stack_t* const stack = k_thread_stack_alloc(sharedStackSize(), 0);
         FW_ASSERT(stack != nullptr, static_cast<FwAssertArgType>(sharedStackSize()));
         SharedThread::start(stack, sharedStackSize());

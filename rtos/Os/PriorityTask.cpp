@@ -14,7 +14,7 @@
 namespace Kit {
 
 Os::TaskInterface::Status PriorityTask::start(const Arguments& arguments) {
-    if (SharedThread::hosts(arguments.m_priority)) {
+    if (SharedThread::hosts(arguments.m_priority) && SharedThread::running()) {
         return SharedThread::join(arguments);  // no thread of its own
     }
     const int mapped = zephyrPriority(arguments.m_priority, CONFIG_NUM_PREEMPT_PRIORITIES, CONFIG_MAIN_THREAD_PRIORITY);

@@ -53,6 +53,7 @@ K_SEM_DEFINE(s_work, 0, 1);
 struct k_thread s_thread;
 //! Where the next search starts: members of one level take turns
 U32 s_next = 0;
+bool s_running = false;
 
 //! The most urgent member with a message, or nullptr
 Member* mostUrgentWithWork(U32 count) {
@@ -120,6 +121,11 @@ void start(k_thread_stack_t* stack, size_t size) {
     FW_ASSERT(priority >= 0, CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH);
     (void)k_thread_create(&s_thread, stack, size, run, nullptr, nullptr, nullptr, priority, 0, K_NO_WAIT);
     (void)k_thread_name_set(&s_thread, "services");
+    s_running = true;
+}
+
+bool running() {
+    return s_running;
 }
 
 Os::TaskInterface::Status join(const Os::TaskInterface::Arguments& arguments) {
@@ -167,6 +173,10 @@ Os::TaskInterface::Status join(const Os::TaskInterface::Arguments& arguments) {
     (void)arguments;
     FW_ASSERT(0);
     return Os::TaskInterface::Status::INVALID_PARAMS;
+}
+
+bool running() {
+    return false;
 }
 
 U32 memberCount() {

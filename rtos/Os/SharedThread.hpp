@@ -33,8 +33,13 @@ constexpr bool hosts(FwTaskPriorityType level) {
     return enabled() && level >= CONFIG_KIT_RTOS_SHARED_LEVEL_LOW && level <= CONFIG_KIT_RTOS_SHARED_LEVEL_HIGH;
 }
 
-//! Before the topology starts its tasks: the thread, on this stack
+//! Before the topology starts its tasks: the thread, on this stack (where
+//! the deployment lists its tasks' levels: rtos/ThreadStacks.cpp)
 void start(k_thread_stack_t* stack, size_t size);
+
+//! Whether start() made the thread: the band's tasks join it, else each
+//! is a thread of its own
+bool running();
 
 //! An active component's task, as Os::Task hands it to its delegate: the
 //! component joins the thread's members (its queue then wakes the thread)
